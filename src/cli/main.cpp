@@ -1,0 +1,23 @@
+// railstab: lateral stability of railway vehicles. Subcommands live in
+// src/cli/*_command.cpp; this file only wires them and reports errors.
+#include "cli/simulate_command.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+
+int main(int argc, char** argv) {
+  CLI::App app{"railstab: railway vehicle lateral stability (critical speed, eigen-analysis, "
+               "nonlinear time domain)"};
+  app.require_subcommand(1);
+  railstab::register_simulate_command(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const std::exception& e) {
+    std::cerr << "railstab: error: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,29 @@
+#pragma once
+// Shared first steps of every command: read the scene, apply command-line
+// overrides, build the model, solve preloads and the static/steady equilibrium.
+#include "equilibrium/equilibrium.hpp"
+#include "model/model.hpp"
+#include "scene/scene_spec.hpp"
+
+#include <optional>
+#include <string>
+
+namespace railstab {
+
+struct SceneOverrides {
+  std::optional<double> speed_m_per_s;
+  std::optional<double> t_end_s;
+};
+
+struct PreparedScene {
+  SceneSpec spec;
+  Model model;
+  EquilibriumResult equilibrium;  // at t = 0
+};
+
+PreparedScene prepare_scene(const std::string& path, const SceneOverrides& overrides);
+
+// Equilibrium state plus the scene's initial offsets and rates.
+Eigen::VectorXd perturbed_initial_state(const PreparedScene& scene);
+
+}  // namespace railstab

@@ -1,0 +1,47 @@
+#pragma once
+// Equilibria of the model by Newton's method with the AD Jacobian: static
+// equilibrium under gravity, steady rolling on tangent track and steady
+// curving on a constant-radius arc are the same problem (all free
+// accelerations zero, all relative velocities zero), solved by one solver.
+//
+// Unknowns: every free coordinate except wheelset spin angles (cyclic), and
+// the spin *rates* of free-spinning wheelsets (they settle with the rolling
+// radii). Equations: every free coordinate's acceleration is zero.
+#include "model/model.hpp"
+
+#include <Eigen/Dense>
+
+#include <string>
+
+namespace railstab {
+
+struct EquilibriumOptions {
+  double time_s = 0.0;                    // where along the track (frames at s(t))
+  double acceleration_tolerance = 1e-7;   // max |acceleration| (m/s^2, rad/s^2)
+  int max_iterations = 60;
+};
+
+struct EquilibriumResult {
+  Eigen::VectorXd state;       // full state x = [q; u] at the equilibrium
+  int iterations = 0;
+  double max_acceleration = 0.0;
+  std::string worst_state;     // name of the largest residual
+};
+
+// Throws std::runtime_error ("no equilibrium ...: residual of <state> ...")
+// when Newton does not converge.
+EquilibriumResult solve_equilibrium(const Model& model, const Eigen::VectorXd& guess,
+                                    const EquilibriumOptions& options = {});
+
+// Nominal state: every body at its nominal position, no offsets, wheelsets
+// spinning at V/r0, everything else at rest relative to its track frame.
+Eigen::VectorXd nominal_state(const Model& model);
+
+// ERRATA 13: set each element's preload so that the nominal configuration is
+// the static equilibrium under gravity (elastic forces of the sagged
+// equilibrium become preloads). Returns the static equilibrium of the
+// preloaded model (the wheelsets sink by the contact approach only).
+EquilibriumResult balance_gravity_at_nominal(Model& model, double time_s = 0.0);
+
+
+}  // namespace railstab

@@ -1,0 +1,20 @@
+#pragma once
+// Output files are written whole or not at all: content goes to a temporary
+// file beside the target, which is renamed over it only when complete.
+#include "integrate/integrator.hpp"
+#include "model/model.hpp"
+
+#include <functional>
+#include <ostream>
+#include <string>
+
+namespace railstab {
+
+void write_file_atomically(const std::string& path,
+                           const std::function<void(std::ostream&)>& write);
+
+// CSV: time_s, then <body>.<coordinate> for all six coordinates of every body
+// (relative to the body's track frame). Throws if a value is not finite.
+void write_trajectory_csv(const std::string& path, const Model& model, const Trajectory& traj);
+
+}  // namespace railstab

@@ -1,0 +1,1069 @@
+// Scene files (TOML) -> SceneSpec, and the semantic checks on a SceneSpec.
+//
+// Sections of a scene file (complete, commented examples: cases/*.toml):
+//   [scene]             name, speed_m_per_s, reference_arc_length_m,
+//                       gravity_m_per_s2 (9.81), preload ("balance_gravity_at_nominal")
+//   [track]             start_* (0), rail_contact_distance_m (1.5),
+//   [[track.segments]]  type = tangent | clothoid | arc, length_m, end_cant_m
+//                       (default: the cant the segment starts with); a clothoid
+//                       takes end_radius_m + turn, or end_curvature_per_m
+//   [contacts.<name>]   geometry, normal, tangential (+ their numbers)
+//   [[bodies]]          name, type, mass_kg, inertia_kg_m2, position_m, ...
+//   [[elements]]        name, type, body1, body2, points, stiffness, damping, ...
+//   [simulation]        optional: t_end_s, output_interval_s, tolerances
+//
+// How this file is organised:
+//   1. message helpers        every error reads "<file>: <key path>: expected ..., got ..."
+//   2. key suggestions        "unknown key (did you mean 'mass_kg'?)"
+//   3. TableReader            reads one typed key of one TOML table, with its key path
+//   4. section readers        one function per part of the file
+//   5. SceneChecker           validate_scene: the semantic checks
+//   6. public API
+#include "io/scene_loader.hpp"
+
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <optional>
+#include <sstream>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace railstab {
+namespace {
+
+// ============================================================================
+// 1. Message helpers
+// ============================================================================
+
+// Shortest text that reads back as the same double: -3, 0.1, 2.1e+11.
+std::string format_number(double value) {
+  char buffer[64];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+  return std::string(buffer, result.ptr);
+}
+
+std::string format_vector(const Eigen::Vector3d& v) {
+  return "[" + format_number(v.x()) + ", " + format_number(v.y()) + ", " + format_number(v.z()) +
+         "]";
+}
+
+std::string quoted(std::string_view text) { return "'" + std::string(text) + "'"; }
+
+// "a, b, c" (or "none" for an empty list).
+std::string comma_separated(const std::vector<std::string>& items) {
+  if (items.empty()) return "none";
+  std::string text;
+  for (const std::string& item : items) text += (text.empty() ? "" : ", ") + item;
+  return text;
+}
+
+std::string child_path(std::string_view parent, std::string_view key) {
+  if (parent.empty()) return std::string(key);
+  return std::string(parent) + "." + std::string(key);
+}
+
+std::string indexed_path(std::string_view array_path, size_t index) {
+  return std::string(array_path) + "[" + std::to_string(index) + "]";
+}
+
+SceneError scene_error(std::string_view source, std::string_view key_path,
+                       std::string_view message) {
+  return SceneError(std::string(source) + ": " + std::string(key_path) + ": " +
+                    std::string(message));
+}
+
+// The uniform message: "<file>: <key path>: expected <expected>, got <found>".
+[[noreturn]] void fail_expectation(std::string_view source, std::string_view key_path,
+                                   std::string_view expected, std::string_view found) {
+  throw scene_error(source, key_path,
+                    "expected " + std::string(expected) + ", got " + std::string(found));
+}
+
+// What a TOML value is, for the "got ..." part of a message.
+std::string describe_found(const toml::node& node) {
+  switch (node.type()) {
+    case toml::node_type::string:
+      return "a string " + quoted(node.as_string()->get());
+    case toml::node_type::integer:
+      return std::to_string(node.as_integer()->get());
+    case toml::node_type::floating_point:
+      return format_number(node.as_floating_point()->get());
+    case toml::node_type::boolean:
+      return node.as_boolean()->get() ? "true" : "false";
+    case toml::node_type::array: {
+      const size_t size = node.as_array()->size();
+      return "an array of " + std::to_string(size) + (size == 1 ? " element" : " elements");
+    }
+    case toml::node_type::table:
+      return "a table";
+    case toml::node_type::date:
+    case toml::node_type::time:
+    case toml::node_type::date_time:
+      return "a date/time";
+    default:
+      return "nothing";
+  }
+}
+
+const char* const kMissingKey = "nothing (the key is missing)";
+
+// ============================================================================
+// 2. Key suggestions
+// ============================================================================
+
+std::string lower_case(std::string_view text) {
+  std::string lower(text);
+  for (char& c : lower) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return lower;
+}
+
+bool is_unit_word(std::string_view word) {
+  static const std::vector<std::string_view> kUnitWords = {
+      "m",  "mm",  "cm",  "km",  "kg",  "g",   "s",    "ms",  "h",  "min", "n",  "kn",
+      "pa", "kpa", "mpa", "gpa", "rad", "deg", "mrad", "per", "m2", "m3",  "s2", "hz"};
+  return std::find(kUnitWords.begin(), kUnitWords.end(), lower_case(word)) != kUnitWords.end();
+}
+
+// The key without its unit suffix, lower case: "mass_kg" and "mass_g" -> "mass",
+// "speed_m_per_s" -> "speed", "f23_N_m" -> "f23". The first word always stays.
+std::string unit_stripped_stem(std::string_view key) {
+  std::vector<std::string_view> words;
+  size_t start = 0;
+  while (start <= key.size()) {
+    const size_t end = std::min(key.find('_', start), key.size());
+    words.push_back(key.substr(start, end - start));
+    start = end + 1;
+  }
+  while (words.size() > 1 && is_unit_word(words.back())) words.pop_back();
+  std::string stem;
+  for (std::string_view word : words) stem += (stem.empty() ? "" : "_") + std::string(word);
+  return lower_case(stem);
+}
+
+// Levenshtein distance (insertions, deletions, substitutions), case-insensitive.
+size_t edit_distance(std::string_view a_text, std::string_view b_text) {
+  const std::string a = lower_case(a_text), b = lower_case(b_text);
+  std::vector<size_t> previous(b.size() + 1), current(b.size() + 1);
+  for (size_t j = 0; j <= b.size(); ++j) previous[j] = j;
+  for (size_t i = 1; i <= a.size(); ++i) {
+    current[0] = i;
+    for (size_t j = 1; j <= b.size(); ++j) {
+      const size_t substitution = previous[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1);
+      current[j] = std::min({previous[j] + 1, current[j - 1] + 1, substitution});
+    }
+    std::swap(previous, current);
+  }
+  return previous[b.size()];
+}
+
+// The candidate the user most likely meant: one with the same stem before the
+// unit suffix, else the nearest within a small edit distance; none if nothing fits.
+std::optional<std::string> closest_name(std::string_view name,
+                                        const std::vector<std::string_view>& candidates) {
+  const std::string stem = unit_stripped_stem(name);
+  for (std::string_view candidate : candidates)
+    if (unit_stripped_stem(candidate) == stem) return std::string(candidate);
+  const size_t allowed = name.size() <= 2 ? 0 : name.size() <= 5 ? 1 : 2;
+  std::optional<std::string> best;
+  size_t best_distance = allowed + 1;
+  for (std::string_view candidate : candidates) {
+    const size_t distance = edit_distance(name, candidate);
+    if (distance < best_distance) {
+      best = std::string(candidate);
+      best_distance = distance;
+    }
+  }
+  return best;
+}
+
+std::string did_you_mean(std::string_view name, const std::vector<std::string_view>& candidates) {
+  const std::optional<std::string> suggestion = closest_name(name, candidates);
+  return suggestion ? " (did you mean " + quoted(*suggestion) + "?)" : "";
+}
+
+// ============================================================================
+// 3. Reading typed values with their key path
+// ============================================================================
+
+// Scene-file spellings of an enumeration, e.g. {"tangent", TrackSegmentKind::tangent}.
+template <class Value>
+using Choices = std::vector<std::pair<std::string_view, Value>>;
+
+// " (kg)", or nothing for a plain ratio.
+std::string unit_suffix(std::string_view unit) {
+  return unit.empty() ? "" : " (" + std::string(unit) + ")";
+}
+
+std::string number_description(std::string_view unit) { return "a number" + unit_suffix(unit); }
+
+// A finite number; integers are accepted where a float is expected.
+double number_from(const toml::node& node, std::string_view source, std::string_view path,
+                   std::string_view unit) {
+  if (!node.is_number())
+    fail_expectation(source, path, number_description(unit), describe_found(node));
+  const double value = *node.value<double>();
+  if (!std::isfinite(value))
+    fail_expectation(source, path, "a finite number" + unit_suffix(unit), describe_found(node));
+  return value;
+}
+
+std::string text_from(const toml::node& node, std::string_view source, std::string_view path) {
+  if (!node.is_string()) fail_expectation(source, path, "a string", describe_found(node));
+  return node.as_string()->get();
+}
+
+template <class Value>
+Value choice_from(const toml::node& node, std::string_view source, std::string_view path,
+                  const Choices<Value>& choices) {
+  std::vector<std::string_view> spellings;
+  std::string expected = "one of ";
+  for (const auto& [spelling, value] : choices) {
+    expected += (spellings.empty() ? "" : ", ") + quoted(spelling);
+    spellings.push_back(spelling);
+  }
+  if (!node.is_string()) fail_expectation(source, path, expected, describe_found(node));
+  const std::string& text = node.as_string()->get();
+  for (const auto& [spelling, value] : choices)
+    if (text == spelling) return value;
+  fail_expectation(source, path, expected, quoted(text) + did_you_mean(text, spellings));
+}
+
+// One TOML table plus where it sits in the file. It knows the keys the table
+// may hold (declared up front, so a misspelt key is reported as such instead
+// of as a missing one) and reads each key as one type, with uniform messages.
+class TableReader {
+ public:
+  TableReader(const toml::table& table, std::string key_path, std::string source,
+              std::vector<std::string_view> known_keys)
+      : table_(table),
+        key_path_(std::move(key_path)),
+        source_(std::move(source)),
+        known_keys_(known_keys) {
+    reject_unknown_keys();
+  }
+
+  const std::string& source() const { return source_; }
+  const std::string& key_path() const { return key_path_; }
+  std::string path_of(std::string_view key) const { return child_path(key_path_, key); }
+  bool has(std::string_view key) const { return find(key) != nullptr; }
+
+  [[noreturn]] void fail(std::string_view key, std::string_view expected,
+                         std::string_view found) const {
+    fail_expectation(source_, path_of(key), expected, found);
+  }
+  // An error about the table as a whole (e.g. a combination of keys).
+  [[noreturn]] void fail_here(std::string_view expected, std::string_view found) const {
+    fail_expectation(source_, key_path_, expected, found);
+  }
+  [[noreturn]] void fail_missing(std::string_view key, std::string_view expected) const {
+    fail(key, expected, kMissingKey);
+  }
+
+  double number(std::string_view key, std::string_view unit) const {
+    return number_from(required(key, number_description(unit)), source_, path_of(key), unit);
+  }
+  double number_or(std::string_view key, std::string_view unit, double fallback) const {
+    return has(key) ? number(key, unit) : fallback;
+  }
+
+  std::string text(std::string_view key) const {
+    return text_from(required(key, "a string"), source_, path_of(key));
+  }
+
+  bool flag_or(std::string_view key, bool fallback) const {
+    const toml::node* node = find(key);
+    if (!node) return fallback;
+    if (!node->is_boolean()) fail(key, "true or false", describe_found(*node));
+    return node->as_boolean()->get();
+  }
+
+  // An array of exactly three numbers, e.g. [0.0, 1.0, -0.6075].
+  Eigen::Vector3d vector3(std::string_view key, std::string_view unit) const {
+    const std::string expected = "an array of 3 numbers" + unit_suffix(unit);
+    const toml::node& node = required(key, expected);
+    const toml::array* array = node.as_array();
+    if (!array || array->size() != 3) fail(key, expected, describe_found(node));
+    Eigen::Vector3d vector;
+    for (size_t i = 0; i < 3; ++i)
+      vector(Eigen::Index(i)) =
+          number_from(*array->get(i), source_, indexed_path(path_of(key), i), unit);
+    return vector;
+  }
+  Eigen::Vector3d vector3_or(std::string_view key, std::string_view unit,
+                             const Eigen::Vector3d& fallback) const {
+    return has(key) ? vector3(key, unit) : fallback;
+  }
+
+  template <class Value>
+  Value choice(std::string_view key, const Choices<Value>& choices) const {
+    return choice_from(required(key, "a string"), source_, path_of(key), choices);
+  }
+  template <class Value>
+  Value choice_or(std::string_view key, const Choices<Value>& choices, Value fallback) const {
+    return has(key) ? choice(key, choices) : fallback;
+  }
+
+  const toml::array& array(std::string_view key, std::string_view expected) const {
+    const toml::node& node = required(key, expected);
+    if (!node.is_array()) fail(key, expected, describe_found(node));
+    return *node.as_array();
+  }
+
+  // A sub-table ([track], initial_offset = {...}) or nothing if the key is absent.
+  const toml::table* raw_table_or_null(std::string_view key) const {
+    const toml::node* node = find(key);
+    if (!node) return nullptr;
+    if (!node->is_table()) fail(key, "a table", describe_found(*node));
+    return node->as_table();
+  }
+  std::optional<TableReader> optional_table(std::string_view key,
+                                            const std::vector<std::string_view>& known_keys) const {
+    const toml::table* table = raw_table_or_null(key);
+    if (!table) return std::nullopt;
+    return TableReader(*table, path_of(key), source_, known_keys);
+  }
+  TableReader table(std::string_view key, const std::vector<std::string_view>& known_keys) const {
+    if (!has(key)) fail_missing(key, "a table [" + path_of(key) + "]");
+    return *optional_table(key, known_keys);
+  }
+
+  // [[bodies]] and the like: one reader per table, key paths "bodies[i]".
+  std::vector<TableReader> tables_in_array(std::string_view key,
+                                           const std::vector<std::string_view>& known_keys) const {
+    const toml::array& tables = array(key, "an array of tables [[" + path_of(key) + "]]");
+    std::vector<TableReader> readers;
+    for (size_t i = 0; i < tables.size(); ++i) {
+      const toml::node& element = *tables.get(i);
+      const std::string path = indexed_path(path_of(key), i);
+      if (!element.is_table()) fail_expectation(source_, path, "a table", describe_found(element));
+      readers.emplace_back(*element.as_table(), path, source_, known_keys);
+    }
+    return readers;
+  }
+  std::vector<TableReader> tables_in_array_or_none(
+      std::string_view key, const std::vector<std::string_view>& known_keys) const {
+    return has(key) ? tables_in_array(key, known_keys) : std::vector<TableReader>{};
+  }
+
+  // For keys that are known but do not belong with the other values given
+  // (e.g. end_radius_m on a tangent segment): an error if present.
+  void reject_if_present(std::string_view key, std::string_view expected) const {
+    if (const toml::node* node = find(key)) fail(key, expected, describe_found(*node));
+  }
+
+ private:
+  const toml::node* find(std::string_view key) const {
+    if (std::find(known_keys_.begin(), known_keys_.end(), key) == known_keys_.end())
+      throw std::logic_error("scene_loader: key '" + std::string(key) +
+                             "' is read but not declared for " + key_path_);
+    return table_.get(key);
+  }
+
+  const toml::node& required(std::string_view key, std::string_view expected) const {
+    const toml::node* node = find(key);
+    if (!node) fail_missing(key, expected);
+    return *node;
+  }
+
+  void reject_unknown_keys() const {
+    for (const auto& [key, value] : table_) {
+      const std::string_view name = key.str();
+      if (std::find(known_keys_.begin(), known_keys_.end(), name) != known_keys_.end()) continue;
+      throw scene_error(source_, path_of(name), "unknown key" + did_you_mean(name, known_keys_));
+    }
+  }
+
+  const toml::table& table_;
+  std::string key_path_;
+  std::string source_;
+  std::vector<std::string_view> known_keys_;
+};
+
+// ============================================================================
+// 4. Section readers
+// ============================================================================
+
+const Choices<PreloadMode> kPreloadModes = {
+    {"balance_gravity_at_nominal", PreloadMode::balance_gravity_at_nominal},
+    {"none", PreloadMode::none}};
+const Choices<TrackSegmentKind> kSegmentKinds = {{"tangent", TrackSegmentKind::tangent},
+                                                 {"clothoid", TrackSegmentKind::clothoid},
+                                                 {"arc", TrackSegmentKind::arc}};
+const Choices<double> kTurnSigns = {{"left", +1.0}, {"right", -1.0}};
+const Choices<ContactGeometryKind> kContactGeometries = {
+    {"knife_edge_cone", ContactGeometryKind::knife_edge_cone},
+    {"linear_conicity", ContactGeometryKind::linear_conicity}};
+const Choices<NormalForceKind> kNormalForces = {{"hertz", NormalForceKind::hertz},
+                                                {"prescribed", NormalForceKind::prescribed}};
+const Choices<TangentialForceKind> kTangentialForces = {
+    {"kalker_hertz", TangentialForceKind::kalker_hertz},
+    {"constant", TangentialForceKind::constant},
+    {"none", TangentialForceKind::none}};
+const Choices<bool> kBodyIsWheelset = {{"wheelset", true}, {"rigid_body", false}};
+const Choices<ElementKind> kElementKinds = {
+    {"spring_damper_3d", ElementKind::spring_damper_3d},
+    {"rotational_spring_damper", ElementKind::rotational_spring_damper}};
+
+// --- [scene] -------------------------------------------------------------------
+void read_scene_section(const TableReader& section, SceneSpec& scene) {
+  scene.name = section.text("name");
+  scene.speed_m_per_s = section.number("speed_m_per_s", "m/s");
+  scene.gravity_m_per_s2 = section.number_or("gravity_m_per_s2", "m/s2", scene.gravity_m_per_s2);
+  scene.reference_arc_length_m = section.number("reference_arc_length_m", "m");
+  scene.preload = section.choice_or("preload", kPreloadModes, scene.preload);
+}
+
+// --- [track] ---------------------------------------------------------------------
+double read_clothoid_end_curvature(const TableReader& segment) {
+  const bool by_radius = segment.has("end_radius_m");
+  const bool by_curvature = segment.has("end_curvature_per_m");
+  if (by_radius == by_curvature)
+    segment.fail_here(
+        "exactly one of end_radius_m (with turn) and end_curvature_per_m for a clothoid",
+        by_radius ? "both" : "neither");
+  if (by_curvature) {
+    segment.reject_if_present(
+        "turn", "no turn with end_curvature_per_m (its sign is the direction: > 0 turns left)");
+    return segment.number("end_curvature_per_m", "1/m");
+  }
+  const double radius = segment.number("end_radius_m", "m");
+  if (!(radius > 0))
+    segment.fail("end_radius_m", "a positive number (m); end_curvature_per_m = 0 ends a curve",
+                 format_number(radius));
+  return segment.choice("turn", kTurnSigns) / radius;
+}
+
+void reject_clothoid_keys(const TableReader& segment, std::string_view kind) {
+  for (std::string_view key : {"end_radius_m", "turn", "end_curvature_per_m"})
+    segment.reject_if_present(
+        key, "no " + std::string(key) + " on " + std::string(kind) +
+                 " (only a clothoid sets its end curvature; an arc keeps the one it starts with)");
+}
+
+TrackSegmentSpec read_segment(const TableReader& segment, double start_curvature_per_m,
+                              double start_cant_m) {
+  TrackSegmentSpec spec;
+  spec.kind = segment.choice("type", kSegmentKinds);
+  spec.length_m = segment.number("length_m", "m");
+  spec.end_cant_m = segment.number_or("end_cant_m", "m", start_cant_m);
+  switch (spec.kind) {
+    case TrackSegmentKind::tangent:
+      reject_clothoid_keys(segment, "a tangent segment");
+      spec.end_curvature_per_m = 0.0;
+      break;
+    case TrackSegmentKind::arc:
+      reject_clothoid_keys(segment, "an arc segment");
+      spec.end_curvature_per_m = start_curvature_per_m;
+      break;
+    case TrackSegmentKind::clothoid:
+      spec.end_curvature_per_m = read_clothoid_end_curvature(segment);
+      break;
+  }
+  return spec;
+}
+
+TrackSpec read_track(const TableReader& track) {
+  TrackSpec spec;
+  spec.start_x_m = track.number_or("start_x_m", "m", spec.start_x_m);
+  spec.start_y_m = track.number_or("start_y_m", "m", spec.start_y_m);
+  spec.start_z_m = track.number_or("start_z_m", "m", spec.start_z_m);
+  spec.start_heading_rad = track.number_or("start_heading_rad", "rad", spec.start_heading_rad);
+  spec.start_curvature_per_m =
+      track.number_or("start_curvature_per_m", "1/m", spec.start_curvature_per_m);
+  spec.start_cant_m = track.number_or("start_cant_m", "m", spec.start_cant_m);
+  spec.rail_contact_distance_m =
+      track.number_or("rail_contact_distance_m", "m", spec.rail_contact_distance_m);
+  double curvature = spec.start_curvature_per_m;
+  double cant = spec.start_cant_m;
+  for (const TableReader& segment : track.tables_in_array(
+           "segments",
+           {"type", "length_m", "end_cant_m", "end_radius_m", "turn", "end_curvature_per_m"})) {
+    spec.segments.push_back(read_segment(segment, curvature, cant));
+    curvature = spec.segments.back().end_curvature_per_m;
+    cant = spec.segments.back().end_cant_m;
+  }
+  return spec;
+}
+
+// --- [contacts.<name>] -------------------------------------------------------------
+// A number with a default that becomes required for one choice of model
+// (e.g. prescribed_wheel_load_N when normal = "prescribed").
+double number_required_when(const TableReader& contact, bool required, std::string_view reason,
+                            std::string_view key, std::string_view unit, double fallback) {
+  if (required && !contact.has(key))
+    contact.fail_missing(key, number_description(unit) + ", required " + std::string(reason));
+  return contact.number_or(key, unit, fallback);
+}
+
+ContactSpec read_contact(const TableReader& contact, std::string name) {
+  ContactSpec spec;
+  spec.name = std::move(name);
+  spec.geometry = contact.choice("geometry", kContactGeometries);
+  spec.normal = contact.choice("normal", kNormalForces);
+  spec.tangential = contact.choice("tangential", kTangentialForces);
+
+  const bool linear_conicity = spec.geometry == ContactGeometryKind::linear_conicity;
+  const bool prescribed = spec.normal == NormalForceKind::prescribed;
+  const bool constant = spec.tangential == TangentialForceKind::constant;
+  spec.cone_angle_rad = contact.number_or("cone_angle_rad", "rad", spec.cone_angle_rad);
+  spec.conicity = number_required_when(
+      contact, linear_conicity, "when geometry = 'linear_conicity'", "conicity", "", spec.conicity);
+  spec.prescribed_wheel_load_N =
+      number_required_when(contact, prescribed, "when normal = 'prescribed'",
+                           "prescribed_wheel_load_N", "N", spec.prescribed_wheel_load_N);
+  const std::string_view constant_reason = "when tangential = 'constant'";
+  spec.f11_N = number_required_when(contact, constant, constant_reason, "f11_N", "N", spec.f11_N);
+  spec.f22_N = number_required_when(contact, constant, constant_reason, "f22_N", "N", spec.f22_N);
+  spec.f23_N_m =
+      number_required_when(contact, constant, constant_reason, "f23_N_m", "N m", spec.f23_N_m);
+  spec.f33_N_m2 =
+      number_required_when(contact, constant, constant_reason, "f33_N_m2", "N m2", spec.f33_N_m2);
+
+  spec.half_contact_distance_m =
+      contact.number_or("half_contact_distance_m", "m", spec.half_contact_distance_m);
+  spec.nominal_rolling_radius_m =
+      contact.number_or("nominal_rolling_radius_m", "m", spec.nominal_rolling_radius_m);
+  spec.rail_head_transverse_radius_m =
+      contact.number_or("rail_head_transverse_radius_m", "m", spec.rail_head_transverse_radius_m);
+  spec.wheel_young_modulus_Pa =
+      contact.number_or("wheel_young_modulus_Pa", "Pa", spec.wheel_young_modulus_Pa);
+  spec.wheel_poisson_ratio = contact.number_or("wheel_poisson_ratio", "", spec.wheel_poisson_ratio);
+  spec.rail_young_modulus_Pa =
+      contact.number_or("rail_young_modulus_Pa", "Pa", spec.rail_young_modulus_Pa);
+  spec.rail_poisson_ratio = contact.number_or("rail_poisson_ratio", "", spec.rail_poisson_ratio);
+  spec.spin_creepage = contact.flag_or("spin_creepage", spec.spin_creepage);
+  return spec;
+}
+
+std::vector<ContactSpec> read_contacts(const TableReader& top) {
+  std::vector<ContactSpec> contacts;
+  const toml::table* all_contacts = top.raw_table_or_null("contacts");
+  if (!all_contacts) return contacts;
+  for (const auto& [name, node] : *all_contacts) {
+    const std::string path = child_path("contacts", name.str());
+    if (!node.is_table())
+      fail_expectation(top.source(), path, "a table [" + path + "] describing a contact model",
+                       describe_found(node));
+    const TableReader contact(
+        *node.as_table(), path, top.source(),
+        {"geometry", "cone_angle_rad", "conicity", "half_contact_distance_m",
+         "nominal_rolling_radius_m", "normal", "prescribed_wheel_load_N",
+         "rail_head_transverse_radius_m", "wheel_young_modulus_Pa", "wheel_poisson_ratio",
+         "rail_young_modulus_Pa", "rail_poisson_ratio", "tangential", "spin_creepage", "f11_N",
+         "f22_N", "f23_N_m", "f33_N_m2"});
+    contacts.push_back(read_contact(contact, std::string(name.str())));
+  }
+  return contacts;
+}
+
+// --- [[bodies]] ------------------------------------------------------------------
+// free = ["y", "yaw"] -> which of the six coordinates move.
+std::array<bool, 6> read_free_coordinates(const TableReader& body) {
+  Choices<int> coordinates;
+  for (int c = 0; c < kCoordinatesPerBody; ++c) coordinates.push_back({kCoordinateKeys[c], c});
+  const toml::array& names =
+      body.array("free", "an array of coordinate names such as [\"y\", \"yaw\"]");
+  std::array<bool, 6> free = {false, false, false, false, false, false};
+  for (size_t i = 0; i < names.size(); ++i) {
+    const std::string path = indexed_path(body.path_of("free"), i);
+    const int c = choice_from(*names.get(i), body.source(), path, coordinates);
+    if (free[c])
+      fail_expectation(body.source(), path, "each coordinate at most once",
+                       quoted(kCoordinateKeys[c]) + " a second time");
+    free[c] = true;
+  }
+  return free;
+}
+
+// initial_offset = { y_m = 0.001 } and initial_rate = { yaw_rad_per_s = 0.1 }:
+// one optional number per coordinate, in the order x, y, z, roll, pitch, yaw.
+struct CoordinateKey {
+  std::string_view key;
+  std::string_view unit;
+};
+const std::array<CoordinateKey, 6> kOffsetKeys = {{{"x_m", "m"},
+                                                   {"y_m", "m"},
+                                                   {"z_m", "m"},
+                                                   {"roll_rad", "rad"},
+                                                   {"pitch_rad", "rad"},
+                                                   {"yaw_rad", "rad"}}};
+const std::array<CoordinateKey, 6> kRateKeys = {{{"x_m_per_s", "m/s"},
+                                                 {"y_m_per_s", "m/s"},
+                                                 {"z_m_per_s", "m/s"},
+                                                 {"roll_rad_per_s", "rad/s"},
+                                                 {"pitch_rad_per_s", "rad/s"},
+                                                 {"yaw_rad_per_s", "rad/s"}}};
+
+std::array<double, 6> read_coordinate_values(const TableReader& body, std::string_view table_key,
+                                             const std::array<CoordinateKey, 6>& keys) {
+  std::vector<std::string_view> known_keys;
+  for (const CoordinateKey& key : keys) known_keys.push_back(key.key);
+  const std::optional<TableReader> table = body.optional_table(table_key, known_keys);
+  std::array<double, 6> values = {0, 0, 0, 0, 0, 0};
+  if (!table) return values;
+  for (int c = 0; c < kCoordinatesPerBody; ++c)
+    values[c] = table->number_or(keys[c].key, keys[c].unit, 0.0);
+  return values;
+}
+
+BodySpec read_body(const TableReader& body) {
+  BodySpec spec;
+  spec.name = body.text("name");
+  spec.is_wheelset = body.choice("type", kBodyIsWheelset);
+  spec.mass_kg = body.number("mass_kg", "kg");
+  spec.inertia_kg_m2 = body.vector3("inertia_kg_m2", "kg m2");
+  spec.track_offset_m = body.number_or("track_offset_m", "m", 0.0);
+  spec.position_m = body.vector3("position_m", "m");
+  if (body.has("free")) spec.free = read_free_coordinates(body);
+  if (spec.is_wheelset && !body.has("contact"))
+    body.fail_missing("contact",
+                      "the name of a [contacts.<name>] table (every wheelset needs one)");
+  if (spec.is_wheelset)
+    spec.contact = body.text("contact");
+  else
+    body.reject_if_present("contact",
+                           "no contact on a rigid_body (only wheelsets touch the rails)");
+  spec.initial_offset = read_coordinate_values(body, "initial_offset", kOffsetKeys);
+  spec.initial_rate = read_coordinate_values(body, "initial_rate", kRateKeys);
+  return spec;
+}
+
+std::vector<BodySpec> read_bodies(const TableReader& top) {
+  std::vector<BodySpec> bodies;
+  for (const TableReader& body : top.tables_in_array(
+           "bodies", {"name", "type", "mass_kg", "inertia_kg_m2", "track_offset_m", "position_m",
+                      "free", "contact", "initial_offset", "initial_rate"}))
+    bodies.push_back(read_body(body));
+  return bodies;
+}
+
+// --- [[elements]] ----------------------------------------------------------------
+// The keys of the two element types; each type rejects the other's.
+const std::array<std::string_view, 3> kTranslationalKeys = {
+    "stiffness_N_per_m", "damping_N_s_per_m", "actuator_force_N"};
+const std::array<std::string_view, 3> kRotationalKeys = {
+    "stiffness_N_m_per_rad", "damping_N_m_s_per_rad", "actuator_moment_N_m"};
+
+void reject_keys_of_other_type(const TableReader& element, std::string_view type,
+                               const std::array<std::string_view, 3>& other_keys,
+                               const std::array<std::string_view, 3>& own_keys) {
+  for (std::string_view key : other_keys)
+    element.reject_if_present(key, "no " + std::string(key) + " on a " + std::string(type) +
+                                       " (it takes " + std::string(own_keys[0]) + ", " +
+                                       std::string(own_keys[1]) + ", " + std::string(own_keys[2]) +
+                                       ")");
+}
+
+void read_spring_damper_3d(const TableReader& element, ElementSpec& spec) {
+  spec.point1_m = element.vector3("point1_m", "m");
+  spec.point2_m = element.vector3("point2_m", "m");
+  spec.stiffness = element.vector3("stiffness_N_per_m", "N/m");
+  spec.damping = element.vector3("damping_N_s_per_m", "N s/m");
+  spec.actuator = element.vector3_or("actuator_force_N", "N", Eigen::Vector3d::Zero());
+  reject_keys_of_other_type(element, "spring_damper_3d", kRotationalKeys, kTranslationalKeys);
+}
+
+void read_rotational_spring_damper(const TableReader& element, ElementSpec& spec) {
+  spec.point1_m = element.vector3_or("point1_m", "m", Eigen::Vector3d::Zero());
+  spec.point2_m = element.vector3_or("point2_m", "m", Eigen::Vector3d::Zero());
+  spec.stiffness = element.vector3("stiffness_N_m_per_rad", "N m/rad");
+  spec.damping = element.vector3("damping_N_m_s_per_rad", "N m s/rad");
+  spec.actuator = element.vector3_or("actuator_moment_N_m", "N m", Eigen::Vector3d::Zero());
+  reject_keys_of_other_type(element, "rotational_spring_damper", kTranslationalKeys,
+                            kRotationalKeys);
+}
+
+// mirror_lateral = true: "<name>_left" as given, "<name>_right" with the y of
+// both points negated.
+std::array<ElementSpec, 2> mirrored_pair(const ElementSpec& element) {
+  ElementSpec left = element;
+  ElementSpec right = element;
+  left.name += "_left";
+  right.name += "_right";
+  right.point1_m.y() = -right.point1_m.y();
+  right.point2_m.y() = -right.point2_m.y();
+  return {left, right};
+}
+
+// Elements as built, and for each the key path of the [[elements]] table it
+// came from (a mirrored table gives two elements with the same path).
+struct ElementList {
+  std::vector<ElementSpec> specs;
+  std::vector<std::string> file_paths;
+};
+
+ElementList read_elements(const TableReader& top) {
+  ElementList list;
+  for (const TableReader& element : top.tables_in_array_or_none(
+           "elements",
+           {"name", "type", "body1", "body2", "point1_m", "point2_m", "stiffness_N_per_m",
+            "damping_N_s_per_m", "actuator_force_N", "stiffness_N_m_per_rad",
+            "damping_N_m_s_per_rad", "actuator_moment_N_m", "mirror_lateral"})) {
+    ElementSpec spec;
+    spec.name = element.text("name");
+    spec.kind = element.choice("type", kElementKinds);
+    spec.body1 = element.text("body1");
+    spec.body2 = element.text("body2");
+    if (spec.kind == ElementKind::spring_damper_3d)
+      read_spring_damper_3d(element, spec);
+    else
+      read_rotational_spring_damper(element, spec);
+    if (element.flag_or("mirror_lateral", false)) {
+      for (const ElementSpec& half : mirrored_pair(spec)) {
+        list.specs.push_back(half);
+        list.file_paths.push_back(element.key_path());
+      }
+    } else {
+      list.specs.push_back(spec);
+      list.file_paths.push_back(element.key_path());
+    }
+  }
+  return list;
+}
+
+// --- [simulation] ------------------------------------------------------------------
+SimulationSpec read_simulation(const std::optional<TableReader>& simulation) {
+  SimulationSpec spec;
+  if (!simulation) return spec;
+  spec.t_end_s = simulation->number_or("t_end_s", "s", spec.t_end_s);
+  spec.output_interval_s = simulation->number_or("output_interval_s", "s", spec.output_interval_s);
+  spec.relative_tolerance =
+      simulation->number_or("relative_tolerance", "", spec.relative_tolerance);
+  spec.absolute_tolerance =
+      simulation->number_or("absolute_tolerance", "", spec.absolute_tolerance);
+  return spec;
+}
+
+toml::table parse_toml(const std::string& text, const std::string& source) {
+  try {
+    return toml::parse(std::string_view(text), std::string_view(source));
+  } catch (const toml::parse_error& error) {
+    const toml::source_position& where = error.source().begin;
+    throw SceneError(source + ": line " + std::to_string(where.line) + ", column " +
+                     std::to_string(where.column) + ": expected valid TOML, got a syntax error: " +
+                     std::string(error.description()));
+  }
+}
+
+// ============================================================================
+// 5. Semantic checks
+// ============================================================================
+
+const char* stiffness_key(ElementKind kind) {
+  return kind == ElementKind::spring_damper_3d ? "stiffness_N_per_m" : "stiffness_N_m_per_rad";
+}
+const char* damping_key(ElementKind kind) {
+  return kind == ElementKind::spring_damper_3d ? "damping_N_s_per_m" : "damping_N_m_s_per_rad";
+}
+
+std::string contact_path(const ContactSpec& contact) {
+  return child_path("contacts", contact.name);
+}
+std::string body_path(size_t index) { return indexed_path("bodies", index); }
+
+// validate_scene, one check per function. Element messages use the key path
+// of the [[elements]] table the element came from (mirroring makes two).
+class SceneChecker {
+ public:
+  SceneChecker(const SceneSpec& scene, std::vector<std::string> element_paths)
+      : scene_(scene),
+        source_(scene.source_path.empty() ? "<scene>" : scene.source_path),
+        element_paths_(std::move(element_paths)) {}
+
+  void check_all() const {
+    check_scene_numbers();
+    check_simulation();
+    check_track();
+    check_contact_names();
+    for (const ContactSpec& contact : scene_.contacts) check_contact(contact);
+    check_body_names();
+    for (size_t i = 0; i < scene_.bodies.size(); ++i) check_body(i);
+    for (size_t i = 0; i < scene_.elements.size(); ++i) check_element(i);
+    check_speed_for_creep_forces();
+    check_bodies_on_track();
+  }
+
+ private:
+  [[noreturn]] void fail(std::string_view path, std::string_view expected,
+                         std::string_view found) const {
+    fail_expectation(source_, path, expected, found);
+  }
+  void require_positive(std::string_view path, double value, std::string_view unit) const {
+    if (!(value > 0))
+      fail(path, "a positive number (" + std::string(unit) + ")", format_number(value));
+  }
+  void require_non_negative(std::string_view path, double value, std::string_view unit) const {
+    if (!(value >= 0))
+      fail(path, "a number >= 0 (" + std::string(unit) + ")", format_number(value));
+  }
+  void require_non_negative_each(std::string_view path, const Eigen::Vector3d& values,
+                                 std::string_view unit) const {
+    if (!(values.array() >= 0).all())
+      fail(path, "three numbers >= 0 (" + std::string(unit) + ")", format_vector(values));
+  }
+
+  void check_scene_numbers() const {
+    require_non_negative("scene.gravity_m_per_s2", scene_.gravity_m_per_s2, "m/s2");
+  }
+
+  void check_simulation() const {
+    const SimulationSpec& simulation = scene_.simulation;
+    require_positive("simulation.t_end_s", simulation.t_end_s, "s");
+    require_positive("simulation.output_interval_s", simulation.output_interval_s, "s");
+    require_positive("simulation.relative_tolerance", simulation.relative_tolerance, "1");
+    require_positive("simulation.absolute_tolerance", simulation.absolute_tolerance, "1");
+  }
+
+  void check_cant(std::string_view path, double cant_m) const {
+    const double distance = scene_.track.rail_contact_distance_m;
+    if (!(std::abs(cant_m) < distance))
+      fail(path, "|cant| < rail_contact_distance_m = " + format_number(distance) + " m",
+           format_number(cant_m));
+  }
+
+  void check_track() const {
+    const TrackSpec& track = scene_.track;
+    require_positive("track.rail_contact_distance_m", track.rail_contact_distance_m, "m");
+    check_cant("track.start_cant_m", track.start_cant_m);
+    if (track.segments.empty())
+      fail("track.segments", "at least one segment [[track.segments]]", "none");
+    for (size_t i = 0; i < track.segments.size(); ++i) {
+      const std::string path = indexed_path("track.segments", i);
+      require_positive(child_path(path, "length_m"), track.segments[i].length_m, "m");
+      check_cant(child_path(path, "end_cant_m"), track.segments[i].end_cant_m);
+      if (!std::isfinite(track.segments[i].end_curvature_per_m))
+        fail(child_path(path, "end_curvature_per_m"), "a finite number (1/m)",
+             format_number(track.segments[i].end_curvature_per_m));
+    }
+  }
+
+  void check_contact_names() const {
+    for (size_t i = 0; i < scene_.contacts.size(); ++i) {
+      const std::string& name = scene_.contacts[i].name;
+      if (name.empty()) fail(indexed_path("contacts", i), "a named contact", "an empty name");
+      for (size_t j = 0; j < i; ++j)
+        if (scene_.contacts[j].name == name)
+          fail(contact_path(scene_.contacts[i]), "a unique contact name", quoted(name) + " twice");
+    }
+  }
+
+  void check_contact(const ContactSpec& contact) const {
+    const std::string path = contact_path(contact);
+    auto at = [&](std::string_view key) { return child_path(path, key); };
+    if (contact.geometry == ContactGeometryKind::knife_edge_cone &&
+        !(contact.cone_angle_rad > 0 && contact.cone_angle_rad < 0.5))
+      fail(at("cone_angle_rad"), "a cone angle in (0, 0.5) rad",
+           format_number(contact.cone_angle_rad));
+    if (contact.geometry == ContactGeometryKind::linear_conicity)
+      require_positive(at("conicity"), contact.conicity, "1");
+    require_positive(at("half_contact_distance_m"), contact.half_contact_distance_m, "m");
+    require_positive(at("nominal_rolling_radius_m"), contact.nominal_rolling_radius_m, "m");
+    require_positive(at("rail_head_transverse_radius_m"), contact.rail_head_transverse_radius_m,
+                     "m");
+    require_positive(at("wheel_young_modulus_Pa"), contact.wheel_young_modulus_Pa, "Pa");
+    require_positive(at("rail_young_modulus_Pa"), contact.rail_young_modulus_Pa, "Pa");
+    check_poisson_ratio(at("wheel_poisson_ratio"), contact.wheel_poisson_ratio);
+    check_poisson_ratio(at("rail_poisson_ratio"), contact.rail_poisson_ratio);
+    if (contact.normal == NormalForceKind::prescribed)
+      require_positive(at("prescribed_wheel_load_N"), contact.prescribed_wheel_load_N, "N");
+    if (contact.tangential == TangentialForceKind::constant) {
+      require_non_negative(at("f11_N"), contact.f11_N, "N");
+      require_non_negative(at("f22_N"), contact.f22_N, "N");
+      require_non_negative(at("f33_N_m2"), contact.f33_N_m2, "N m2");
+      if (!std::isfinite(contact.f23_N_m))
+        fail(at("f23_N_m"), "a finite number (N m)", format_number(contact.f23_N_m));
+    }
+  }
+
+  void check_poisson_ratio(std::string_view path, double ratio) const {
+    if (!(ratio >= 0 && ratio < 0.5))
+      fail(path, "a Poisson ratio in [0, 0.5)", format_number(ratio));
+  }
+
+  void check_body_names() const {
+    for (size_t i = 0; i < scene_.bodies.size(); ++i) {
+      const std::string path = child_path(body_path(i), "name");
+      const std::string& name = scene_.bodies[i].name;
+      if (name.empty()) fail(path, "a non-empty name", "''");
+      if (name == kTrackBodyName)
+        fail(path, "a name other than 'track' (reserved: elements use it for the track frame)",
+             quoted(name));
+      for (size_t j = 0; j < i; ++j)
+        if (scene_.bodies[j].name == name)
+          fail(path, "a unique body name", quoted(name) + ", already the name of " + body_path(j));
+    }
+    if (scene_.bodies.empty()) fail("bodies", "at least one body [[bodies]]", "none");
+  }
+
+  void check_body(size_t index) const {
+    const BodySpec& body = scene_.bodies[index];
+    const std::string path = body_path(index);
+    require_positive(child_path(path, "mass_kg"), body.mass_kg, "kg");
+    check_inertia(child_path(path, "inertia_kg_m2"), body);
+    if (body.is_wheelset)
+      check_wheelset_contact(child_path(path, "contact"), body);
+    else if (!body.contact.empty())
+      fail(child_path(path, "contact"),
+           "no contact on a rigid_body (only wheelsets touch the rails)", quoted(body.contact));
+  }
+
+  void check_inertia(std::string_view path, const BodySpec& body) const {
+    const Eigen::Vector3d& J = body.inertia_kg_m2;
+    if (!(J.array() > 0).all())
+      fail(path, "positive principal moments Jx, Jy, Jz (kg m2)", format_vector(J));
+    if (body.is_wheelset && std::abs(J.x() - J.z()) > 1e-9 * std::max(J.x(), J.z()))
+      fail(path, "Jx = Jz (a wheelset must be axisymmetric; the model drops its spin angle)",
+           "Jx = " + format_number(J.x()) + ", Jz = " + format_number(J.z()));
+    const char* names[3] = {"Jx", "Jy", "Jz"};
+    for (int k = 0; k < 3; ++k) {
+      const int i = (k + 1) % 3, j = (k + 2) % 3;
+      if (J(i) + J(j) < J(k) * (1.0 - 1e-12))
+        fail(path, "principal moments with Ji + Jj >= Jk for every pair",
+             format_vector(J) + ", which is not a physical (positive-definite) inertia (" +
+                 names[i] + " + " + names[j] + " = " + format_number(J(i) + J(j)) + " < " +
+                 names[k] + " = " + format_number(J(k)) + ")");
+    }
+  }
+
+  void check_wheelset_contact(std::string_view path, const BodySpec& wheelset) const {
+    if (wheelset.contact.empty())
+      fail(path, "the name of a [contacts.<name>] table for a wheelset", "nothing");
+    if (!find_contact(wheelset.contact)) {
+      std::vector<std::string> names;
+      for (const ContactSpec& contact : scene_.contacts) names.push_back(contact.name);
+      throw scene_error(source_, path,
+                        "unknown contact " + quoted(wheelset.contact) +
+                            " (contacts: " + comma_separated(names) + ")");
+    }
+  }
+
+  void check_element(size_t index) const {
+    const ElementSpec& element = scene_.elements[index];
+    const std::string path =
+        index < element_paths_.size() ? element_paths_[index] : indexed_path("elements", index);
+    if (element.name.empty()) fail(child_path(path, "name"), "a non-empty name", "''");
+    if (element.body1 != kTrackBodyName && !has_body(element.body1))
+      throw unknown_body(child_path(path, "body1"), element.body1, "; or 'track'");
+    if (element.body2 == kTrackBodyName)
+      fail(child_path(path, "body2"), "a body (only body1 may be 'track')", quoted(element.body2));
+    if (!has_body(element.body2)) throw unknown_body(child_path(path, "body2"), element.body2, "");
+    if (element.body1 == element.body2)
+      fail(child_path(path, "body2"), "a body other than body1",
+           quoted(element.body2) + " for both");
+    require_non_negative_each(child_path(path, stiffness_key(element.kind)), element.stiffness,
+                              element.kind == ElementKind::spring_damper_3d ? "N/m" : "N m/rad");
+    require_non_negative_each(
+        child_path(path, damping_key(element.kind)), element.damping,
+        element.kind == ElementKind::spring_damper_3d ? "N s/m" : "N m s/rad");
+  }
+
+  SceneError unknown_body(std::string_view path, const std::string& name,
+                          std::string_view alternatives) const {
+    std::vector<std::string> names;
+    for (const BodySpec& body : scene_.bodies) names.push_back(body.name);
+    return scene_error(source_, path,
+                       "unknown body " + quoted(name) + " (bodies: " + comma_separated(names) +
+                           std::string(alternatives) + ")");
+  }
+
+  // Creepages are divided by the speed: creep forces need V > 0.
+  void check_speed_for_creep_forces() const {
+    const char* path = "scene.speed_m_per_s";
+    for (const BodySpec& body : scene_.bodies) {
+      const ContactSpec* contact = body.is_wheelset ? find_contact(body.contact) : nullptr;
+      if (contact && contact->tangential != TangentialForceKind::none &&
+          !(scene_.speed_m_per_s > 0))
+        fail(path, "> 0 when creep forces are on (creepages are divided by the speed)",
+             format_number(scene_.speed_m_per_s));
+    }
+    require_non_negative(path, scene_.speed_m_per_s, "m/s");
+  }
+
+  // Each body's own track frame starts at reference + offset: it must be on the track.
+  void check_bodies_on_track() const {
+    double track_length_m = 0.0;
+    for (const TrackSegmentSpec& segment : scene_.track.segments)
+      track_length_m += segment.length_m;
+    for (size_t i = 0; i < scene_.bodies.size(); ++i) {
+      const double offset = scene_.bodies[i].track_offset_m;
+      const double arc_length = scene_.reference_arc_length_m + offset;
+      if (!(arc_length >= 0 && arc_length <= track_length_m))
+        fail(child_path(body_path(i), "track_offset_m"),
+             "the body's track position at t = 0 (reference_arc_length_m + track_offset_m) "
+             "inside the track [0, " +
+                 format_number(track_length_m) + "] m",
+             format_number(scene_.reference_arc_length_m) + (offset < 0 ? " - " : " + ") +
+                 format_number(std::abs(offset)) + " = " + format_number(arc_length) + " m");
+    }
+  }
+
+  const ContactSpec* find_contact(const std::string& name) const {
+    for (const ContactSpec& contact : scene_.contacts)
+      if (contact.name == name) return &contact;
+    return nullptr;
+  }
+
+  bool has_body(const std::string& name) const {
+    return std::any_of(scene_.bodies.begin(), scene_.bodies.end(),
+                       [&](const BodySpec& body) { return body.name == name; });
+  }
+
+  const SceneSpec& scene_;
+  std::string source_;
+  std::vector<std::string> element_paths_;
+};
+
+}  // namespace
+
+// ============================================================================
+// 6. Public API
+// ============================================================================
+
+SceneSpec parse_scene(const std::string& toml_text, const std::string& source_name) {
+  const toml::table root = parse_toml(toml_text, source_name);
+  const TableReader top(root, "", source_name,
+                        {"scene", "track", "contacts", "bodies", "elements", "simulation"});
+  SceneSpec scene;
+  scene.source_path = source_name;
+  read_scene_section(top.table("scene", {"name", "speed_m_per_s", "gravity_m_per_s2",
+                                         "reference_arc_length_m", "preload"}),
+                     scene);
+  scene.track = read_track(top.table(
+      "track", {"start_x_m", "start_y_m", "start_z_m", "start_heading_rad", "start_curvature_per_m",
+                "start_cant_m", "rail_contact_distance_m", "segments"}));
+  scene.contacts = read_contacts(top);
+  scene.bodies = read_bodies(top);
+  ElementList elements = read_elements(top);
+  scene.elements = std::move(elements.specs);
+  scene.simulation = read_simulation(top.optional_table(
+      "simulation", {"t_end_s", "output_interval_s", "relative_tolerance", "absolute_tolerance"}));
+  SceneChecker(scene, std::move(elements.file_paths)).check_all();
+  return scene;
+}
+
+SceneSpec load_scene_file(const std::string& path) {
+  std::ifstream file(path, std::ios::binary);
+  if (!file) throw SceneError(path + ": expected a readable scene file, got none (cannot open it)");
+  std::ostringstream text;
+  text << file.rdbuf();
+  return parse_scene(text.str(), path);
+}
+
+// Without the file at hand, elements are named by name: after mirroring, an
+// element's index no longer matches its [[elements]] table in the file.
+void validate_scene(const SceneSpec& scene) {
+  std::vector<std::string> element_paths;
+  for (size_t i = 0; i < scene.elements.size(); ++i)
+    element_paths.push_back(scene.elements[i].name.empty()
+                                ? indexed_path("elements", i)
+                                : "elements[" + quoted(scene.elements[i].name) + "]");
+  SceneChecker(scene, std::move(element_paths)).check_all();
+}
+
+}  // namespace railstab

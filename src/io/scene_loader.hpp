@@ -1,0 +1,34 @@
+#pragma once
+// Reading scene files (TOML) into a SceneSpec, and checking that a SceneSpec
+// makes physical sense before a model is built from it.
+//
+// The file format is documented at the top of every file in cases/ and in
+// scene_loader.cpp. Parsing is strict: unknown keys, wrong types, non-finite
+// numbers and missing required keys are errors. Every error is a SceneError
+// whose message reads
+//   "<file>: <key path>: <what was expected>, got <what was found>"
+// e.g. "cases/x.toml: bodies[2].mass_kg: expected a positive number (kg), got -3".
+#include <stdexcept>
+#include <string>
+
+#include "scene/scene_spec.hpp"
+
+namespace railstab {
+
+struct SceneError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Reads the file, parses it and validates the result.
+SceneSpec load_scene_file(const std::string& path);
+
+// Parses TOML text and validates the result; `source_name` (usually the file
+// path) prefixes every message and becomes SceneSpec::source_path.
+SceneSpec parse_scene(const std::string& toml_text, const std::string& source_name);
+
+// Semantic checks (positive masses, physical inertias, known body and contact
+// names, speed > 0 with creep forces, track long enough, ...). parse_scene calls
+// it; call it again after changing a scene in code (e.g. command-line --speed).
+void validate_scene(const SceneSpec& scene);
+
+}  // namespace railstab

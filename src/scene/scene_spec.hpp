@@ -1,0 +1,155 @@
+#pragma once
+// The scene as data: what a scene file says, in SI units, before any model is
+// built. The loader (io/scene_loader) fills it and validates it; the model
+// (model/model.hpp) is assembled from it. Nothing here computes physics.
+//
+// Frames and conventions (stated once, used everywhere):
+// - W: fixed (global) frame, z up, gravity along -z.
+// - T: track frame of a body, origin on the track centreline at the body's own
+//   arc length s(t) = reference_arc_length + track_offset + V t; x along the
+//   track, y to the left, z up out of the track plane (A = Az Ay Ax).
+// - Body coordinates (6, relative to T): x, y, z of the centre of mass, then
+//   roll (about x), pitch (about y), yaw (about z), composed as B = Bz Bx By.
+//   A wheelset's pitch is its spin angle; its attachment points live in the
+//   non-spinning intermediate frame I = Bz Bx.
+// - Curvature > 0 turns left (+y). Cant > 0 raises the right rail, i.e. the
+//   normal cant of a left-hand curve; the track roll angle is -asin(cant / D).
+#include <Eigen/Dense>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace railstab {
+
+enum class CoordinateIndex { x = 0, y = 1, z = 2, roll = 3, pitch = 4, yaw = 5 };
+inline constexpr int kCoordinatesPerBody = 6;
+// CSV / report names of the six coordinates, units in the name.
+inline const std::array<std::string, 6> kCoordinateNames = {"x_m", "y_m", "z_m",
+                                                            "roll_rad", "pitch_rad", "yaw_rad"};
+// Scene-file names of the six coordinates (for `free = [...]`).
+inline const std::array<std::string, 6> kCoordinateKeys = {"x", "y", "z", "roll", "pitch", "yaw"};
+
+// --- Track --------------------------------------------------------------------
+enum class TrackSegmentKind { tangent, clothoid, arc };
+
+// A segment starts where the previous one ends (position, heading, curvature,
+// cant), so continuity holds by construction. Curvature varies linearly over a
+// clothoid and is constant on tangent (zero) and arc (= start curvature).
+// Cant varies linearly over every segment from its start to `end_cant_m`.
+struct TrackSegmentSpec {
+  TrackSegmentKind kind = TrackSegmentKind::tangent;
+  double length_m = 0.0;
+  double end_curvature_per_m = 0.0;  // clothoid only; tangent 0, arc = start
+  double end_cant_m = 0.0;
+};
+
+struct TrackSpec {
+  double start_x_m = 0.0;
+  double start_y_m = 0.0;
+  double start_z_m = 0.0;
+  double start_heading_rad = 0.0;
+  double start_curvature_per_m = 0.0;
+  double start_cant_m = 0.0;
+  double rail_contact_distance_m = 1.5;  // D in phi = asin(cant / D) (ERRATA 2)
+  std::vector<TrackSegmentSpec> segments;
+};
+
+// --- Wheel-rail contact ---------------------------------------------------------
+enum class ContactGeometryKind {
+  knife_edge_cone,  // thesis 5.2-5.7: conical wheel on a wire rail
+  linear_conicity   // textbook: r = r0 +/- lambda y, normal along the track normal
+};
+enum class NormalForceKind { hertz, prescribed };
+enum class TangentialForceKind {
+  kalker_hertz,  // Kalker linear, coefficients from the Hertz ellipse and table B.1
+  constant,      // given f11, f22, f23, f33
+  none
+};
+
+struct ContactSpec {
+  std::string name;
+  ContactGeometryKind geometry = ContactGeometryKind::knife_edge_cone;
+  double cone_angle_rad = 0.1;            // knife_edge_cone: gamma
+  double conicity = 0.1;                  // linear_conicity: lambda
+  double half_contact_distance_m = 0.75;  // e0
+  double nominal_rolling_radius_m = 0.45; // r0
+  NormalForceKind normal = NormalForceKind::hertz;
+  double prescribed_wheel_load_N = 0.0;   // normal = prescribed
+  double rail_head_transverse_radius_m = 0.30;  // ERRATA 8
+  double wheel_young_modulus_Pa = 2.1e11;
+  double wheel_poisson_ratio = 0.25;
+  double rail_young_modulus_Pa = 2.1e11;
+  double rail_poisson_ratio = 0.25;
+  TangentialForceKind tangential = TangentialForceKind::kalker_hertz;
+  bool spin_creepage = true;
+  double f11_N = 0.0;     // constant: longitudinal
+  double f22_N = 0.0;     // constant: lateral
+  double f23_N_m = 0.0;   // constant: lateral/spin
+  double f33_N_m2 = 0.0;  // constant: spin
+};
+
+// --- Bodies ------------------------------------------------------------------------
+struct BodySpec {
+  std::string name;
+  bool is_wheelset = false;
+  double mass_kg = 0.0;
+  Eigen::Vector3d inertia_kg_m2 = Eigen::Vector3d::Zero();  // principal Jx, Jy, Jz
+  double track_offset_m = 0.0;  // arc length of its track frame minus the reference
+  Eigen::Vector3d position_m = Eigen::Vector3d::Zero();  // nominal CM in its track frame
+  std::array<bool, 6> free = {true, true, true, true, true, true};
+  std::array<double, 6> initial_offset = {0, 0, 0, 0, 0, 0};  // m and rad, added to nominal
+  std::array<double, 6> initial_rate = {0, 0, 0, 0, 0, 0};    // m/s and rad/s
+  std::string contact;  // wheelsets: name of a ContactSpec
+};
+
+// --- Force elements -------------------------------------------------------------------
+enum class ElementKind {
+  spring_damper_3d,          // thesis 4.82-4.95, axes of body1's frame
+  rotational_spring_damper   // bushing: moment from relative rotation
+};
+
+inline const std::string kTrackBodyName = "track";
+
+struct ElementSpec {
+  std::string name;
+  ElementKind kind = ElementKind::spring_damper_3d;
+  std::string body1;  // may be "track": the track frame of body2 (moves at V)
+  std::string body2;
+  Eigen::Vector3d point1_m = Eigen::Vector3d::Zero();  // in body1's frame
+  Eigen::Vector3d point2_m = Eigen::Vector3d::Zero();  // in body2's frame
+  // spring_damper_3d: N/m, N s/m, N; rotational: N m/rad, N m s/rad, N m.
+  Eigen::Vector3d stiffness = Eigen::Vector3d::Zero();
+  Eigen::Vector3d damping = Eigen::Vector3d::Zero();
+  Eigen::Vector3d actuator = Eigen::Vector3d::Zero();
+};
+
+// --- Analyses ---------------------------------------------------------------------------
+enum class PreloadMode {
+  balance_gravity_at_nominal,  // ERRATA 13: suspension preloads solved so the
+                               // nominal position is the static equilibrium
+  none                         // free lengths at the nominal position: the vehicle sags
+};
+
+struct SimulationSpec {
+  double t_end_s = 10.0;
+  double output_interval_s = 0.01;
+  double relative_tolerance = 1e-6;
+  double absolute_tolerance = 1e-9;
+};
+
+struct SceneSpec {
+  std::string name;
+  std::string source_path;  // file it was read from, for messages
+  double speed_m_per_s = 0.0;
+  double gravity_m_per_s2 = 9.81;
+  double reference_arc_length_m = 0.0;
+  TrackSpec track;
+  std::vector<ContactSpec> contacts;
+  std::vector<BodySpec> bodies;
+  std::vector<ElementSpec> elements;
+  PreloadMode preload = PreloadMode::balance_gravity_at_nominal;
+  SimulationSpec simulation;
+};
+
+}  // namespace railstab

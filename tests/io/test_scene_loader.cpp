@@ -1,0 +1,471 @@
+// Scene files: a minimal valid scene parses to the expected values, each class
+// of mistake gives a SceneError naming the file, the key path and what was
+// expected, and every shipped case file loads.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <initializer_list>
+#include <map>
+#include <string>
+
+#include "io/scene_loader.hpp"
+
+using namespace railstab;
+
+namespace {
+
+const std::string kSource = "cases/minimal.toml";
+
+// Two wheelsets and a bogie frame on a tangent-clothoid-arc track; mirrored
+// primary springs, one unmirrored spring from the track.
+const std::string kMinimalScene = R"toml(
+[scene]
+name = "minimal"
+speed_m_per_s = 20.0
+reference_arc_length_m = 600.0
+
+[track]
+start_heading_rad = 0.25
+[[track.segments]]
+type = "tangent"
+length_m = 1000.0
+[[track.segments]]
+type = "clothoid"
+length_m = 200.0
+end_radius_m = 1000.0
+turn = "left"
+end_cant_m = 0.05
+[[track.segments]]
+type = "arc"
+length_m = 3000.0
+
+[contacts.cone]
+geometry = "knife_edge_cone"
+normal = "hertz"
+tangential = "kalker_hertz"
+cone_angle_rad = 0.12
+
+[[bodies]]
+name = "wheelset1"
+type = "wheelset"
+mass_kg = 1500
+inertia_kg_m2 = [799.35, 93.75, 799.35]
+position_m = [0.0, 0.0, 0.45]
+contact = "cone"
+initial_offset = { y_m = 0.001, yaw_rad = 0.002 }
+initial_rate = { roll_rad_per_s = 0.3 }
+
+[[bodies]]
+name = "wheelset2"
+type = "wheelset"
+mass_kg = 1500.0
+inertia_kg_m2 = [799.35, 93.75, 799.35]
+track_offset_m = -3.0
+position_m = [0.0, 0.0, 0.45]
+contact = "cone"
+
+[[bodies]]
+name = "bogie1"
+type = "rigid_body"
+mass_kg = 3020.0
+inertia_kg_m2 = [2130.912, 4063.712, 4063.712]
+track_offset_m = -1.5
+position_m = [0.0, 0.0, 1.0575]
+free = ["yaw", "y"]
+
+[[elements]]
+name = "primary_ws1"
+type = "spring_damper_3d"
+body1 = "wheelset1"
+body2 = "bogie1"
+point1_m = [0.0, 1.0, 0.0]
+point2_m = [1.5, 1.0, -0.6075]
+stiffness_N_per_m = [3.9e7, 7.85e6, 9.75e5]
+damping_N_s_per_m = [0.0, 0.0, 1.08e4]
+mirror_lateral = true
+
+[[elements]]
+name = "anchor"
+type = "spring_damper_3d"
+body1 = "track"
+body2 = "bogie1"
+point1_m = [0.0, 0.0, 0.5]
+point2_m = [0.0, 0.0, 0.0]
+stiffness_N_per_m = [1.0, 2.0, 3.0]
+damping_N_s_per_m = [0.0, 0.0, 0.0]
+actuator_force_N = [0.0, 5.0, 0.0]
+
+[[elements]]
+name = "yaw_damper"
+type = "rotational_spring_damper"
+body1 = "wheelset2"
+body2 = "bogie1"
+stiffness_N_m_per_rad = [0.0, 0.0, 1.0e5]
+damping_N_m_s_per_rad = [0.0, 0.0, 2.0e4]
+
+[simulation]
+t_end_s = 5.0
+)toml";
+
+// `text` with the first occurrence of `original` (which must occur) replaced.
+std::string replaced(std::string text, const std::string& original,
+                     const std::string& replacement) {
+  const size_t at = text.find(original);
+  if (at == std::string::npos) throw std::logic_error("test text not found: " + original);
+  return text.replace(at, original.size(), replacement);
+}
+
+std::string minimal_with(const std::string& original, const std::string& replacement) {
+  return replaced(kMinimalScene, original, replacement);
+}
+
+// Parses `text`, expecting a SceneError whose message contains every fragment.
+void expect_scene_error(const std::string& text, std::initializer_list<std::string> fragments) {
+  try {
+    parse_scene(text, kSource);
+    ADD_FAILURE() << "expected a SceneError, the scene parsed";
+  } catch (const SceneError& error) {
+    const std::string message = error.what();
+    EXPECT_EQ(message.rfind(kSource + ": ", 0), 0u) << message;
+    for (const std::string& fragment : fragments)
+      EXPECT_NE(message.find(fragment), std::string::npos)
+          << "message lacks \"" << fragment << "\": " << message;
+  }
+}
+
+const ElementSpec& element_named(const SceneSpec& scene, const std::string& name) {
+  for (const ElementSpec& element : scene.elements)
+    if (element.name == name) return element;
+  throw std::logic_error("no element " + name);
+}
+
+}  // namespace
+
+// --- A valid scene -------------------------------------------------------------
+
+TEST(SceneLoader, MinimalSceneParsesToExpectedValues) {
+  const SceneSpec scene = parse_scene(kMinimalScene, kSource);
+  EXPECT_EQ(scene.name, "minimal");
+  EXPECT_EQ(scene.source_path, kSource);
+  EXPECT_DOUBLE_EQ(scene.speed_m_per_s, 20.0);
+  EXPECT_DOUBLE_EQ(scene.gravity_m_per_s2, 9.81);  // default
+  EXPECT_DOUBLE_EQ(scene.reference_arc_length_m, 600.0);
+  EXPECT_EQ(scene.preload, PreloadMode::balance_gravity_at_nominal);  // default
+
+  EXPECT_DOUBLE_EQ(scene.track.start_heading_rad, 0.25);
+  EXPECT_DOUBLE_EQ(scene.track.rail_contact_distance_m, 1.5);  // default
+  ASSERT_EQ(scene.track.segments.size(), 3u);
+  EXPECT_EQ(scene.track.segments[1].kind, TrackSegmentKind::clothoid);
+  EXPECT_DOUBLE_EQ(scene.track.segments[1].end_curvature_per_m, 1.0 / 1000.0);  // left: > 0
+  EXPECT_DOUBLE_EQ(scene.track.segments[0].end_cant_m, 0.0);
+  EXPECT_DOUBLE_EQ(scene.track.segments[1].end_cant_m, 0.05);
+  EXPECT_EQ(scene.track.segments[2].kind, TrackSegmentKind::arc);
+  EXPECT_DOUBLE_EQ(scene.track.segments[2].end_cant_m, 0.05);  // keeps its start cant
+  EXPECT_DOUBLE_EQ(scene.track.segments[2].end_curvature_per_m, 1.0 / 1000.0);
+
+  ASSERT_EQ(scene.contacts.size(), 1u);
+  const ContactSpec& contact = scene.contacts[0];
+  EXPECT_EQ(contact.name, "cone");
+  EXPECT_EQ(contact.geometry, ContactGeometryKind::knife_edge_cone);
+  EXPECT_DOUBLE_EQ(contact.cone_angle_rad, 0.12);
+  EXPECT_DOUBLE_EQ(contact.rail_head_transverse_radius_m, 0.30);  // default (ERRATA 8)
+  EXPECT_TRUE(contact.spin_creepage);
+
+  ASSERT_EQ(scene.bodies.size(), 3u);
+  const BodySpec& wheelset1 = scene.bodies[0];
+  EXPECT_TRUE(wheelset1.is_wheelset);
+  EXPECT_DOUBLE_EQ(wheelset1.mass_kg, 1500.0);  // an integer is accepted for a float
+  EXPECT_DOUBLE_EQ(wheelset1.inertia_kg_m2.y(), 93.75);
+  EXPECT_DOUBLE_EQ(wheelset1.track_offset_m, 0.0);  // default
+  EXPECT_EQ(wheelset1.contact, "cone");
+  EXPECT_EQ(wheelset1.free, (std::array<bool, 6>{true, true, true, true, true, true}));
+  EXPECT_EQ(wheelset1.initial_offset, (std::array<double, 6>{0, 0.001, 0, 0, 0, 0.002}));
+  EXPECT_EQ(wheelset1.initial_rate, (std::array<double, 6>{0, 0, 0, 0.3, 0, 0}));
+  const BodySpec& bogie = scene.bodies[2];
+  EXPECT_FALSE(bogie.is_wheelset);
+  EXPECT_DOUBLE_EQ(bogie.track_offset_m, -1.5);
+  EXPECT_DOUBLE_EQ(bogie.position_m.z(), 1.0575);
+  EXPECT_EQ(bogie.free, (std::array<bool, 6>{false, true, false, false, false, true}));
+
+  ASSERT_EQ(scene.elements.size(), 4u);  // mirrored pair + anchor + yaw damper
+  const ElementSpec& left = element_named(scene, "primary_ws1_left");
+  const ElementSpec& right = element_named(scene, "primary_ws1_right");
+  EXPECT_EQ(left.point1_m, Eigen::Vector3d(0.0, 1.0, 0.0));
+  EXPECT_EQ(left.point2_m, Eigen::Vector3d(1.5, 1.0, -0.6075));
+  EXPECT_EQ(right.point1_m, Eigen::Vector3d(0.0, -1.0, 0.0));
+  EXPECT_EQ(right.point2_m, Eigen::Vector3d(1.5, -1.0, -0.6075));
+  EXPECT_EQ(right.stiffness, Eigen::Vector3d(3.9e7, 7.85e6, 9.75e5));
+  EXPECT_EQ(right.damping, Eigen::Vector3d(0.0, 0.0, 1.08e4));
+  EXPECT_EQ(right.body1, "wheelset1");
+  EXPECT_EQ(right.body2, "bogie1");
+  const ElementSpec& anchor = element_named(scene, "anchor");
+  EXPECT_EQ(anchor.body1, kTrackBodyName);
+  EXPECT_EQ(anchor.actuator, Eigen::Vector3d(0.0, 5.0, 0.0));
+  const ElementSpec& yaw_damper = element_named(scene, "yaw_damper");
+  EXPECT_EQ(yaw_damper.kind, ElementKind::rotational_spring_damper);
+  EXPECT_EQ(yaw_damper.point1_m, Eigen::Vector3d::Zero());  // default for rotational
+  EXPECT_EQ(yaw_damper.damping, Eigen::Vector3d(0.0, 0.0, 2.0e4));
+
+  EXPECT_DOUBLE_EQ(scene.simulation.t_end_s, 5.0);
+  EXPECT_DOUBLE_EQ(scene.simulation.output_interval_s, 0.01);  // default
+}
+
+TEST(SceneLoader, ClothoidTurningRightOrGivenByCurvature) {
+  const SceneSpec right = parse_scene(minimal_with("turn = \"left\"", "turn = \"right\""), kSource);
+  EXPECT_DOUBLE_EQ(right.track.segments[1].end_curvature_per_m, -1.0 / 1000.0);
+  const SceneSpec by_curvature = parse_scene(
+      minimal_with("end_radius_m = 1000.0\nturn = \"left\"", "end_curvature_per_m = 0.002"),
+      kSource);
+  EXPECT_DOUBLE_EQ(by_curvature.track.segments[1].end_curvature_per_m, 0.002);
+}
+
+TEST(SceneLoader, OptionalContactKeysForOtherModelsAreAccepted) {
+  const SceneSpec scene = parse_scene(
+      minimal_with("cone_angle_rad = 0.12", "cone_angle_rad = 0.12\nconicity = 0.2\nf11_N = 1.0"),
+      kSource);
+  EXPECT_DOUBLE_EQ(scene.contacts[0].conicity, 0.2);
+}
+
+// --- Structure and types ---------------------------------------------------------
+
+TEST(SceneLoader, MissingRequiredKey) {
+  expect_scene_error(minimal_with("speed_m_per_s = 20.0\n", ""),
+                     {"scene.speed_m_per_s", "expected a number (m/s)", "key is missing"});
+}
+
+TEST(SceneLoader, WrongTypeStringForNumber) {
+  expect_scene_error(minimal_with("mass_kg = 3020.0", "mass_kg = \"heavy\""),
+                     {"bodies[2].mass_kg", "expected a number (kg)", "got a string 'heavy'"});
+}
+
+TEST(SceneLoader, WrongTypeArrayOfWrongLength) {
+  expect_scene_error(minimal_with("inertia_kg_m2 = [2130.912, 4063.712, 4063.712]",
+                                  "inertia_kg_m2 = [2130.912, 4063.712]"),
+                     {"bodies[2].inertia_kg_m2", "expected an array of 3 numbers (kg m2)",
+                      "got an array of 2 elements"});
+}
+
+TEST(SceneLoader, WrongTypeInsideArray) {
+  expect_scene_error(
+      minimal_with("point2_m = [1.5, 1.0, -0.6075]", "point2_m = [1.5, true, -0.6075]"),
+      {"elements[0].point2_m[1]", "expected a number (m)", "got true"});
+}
+
+TEST(SceneLoader, NonFiniteNumber) {
+  expect_scene_error(minimal_with("length_m = 3000.0", "length_m = inf"),
+                     {"track.segments[2].length_m", "expected a finite number (m)", "got inf"});
+  expect_scene_error(minimal_with("mass_kg = 3020.0", "mass_kg = nan"),
+                     {"bodies[2].mass_kg", "expected a finite number (kg)"});
+}
+
+TEST(SceneLoader, WrongUnitKeySuggestsTheKnownKey) {
+  expect_scene_error(minimal_with("mass_kg = 3020.0", "mass_g = 3020000.0"),
+                     {"bodies[2].mass_g", "unknown key", "did you mean 'mass_kg'?"});
+}
+
+TEST(SceneLoader, MisspeltKeySuggestsTheKnownKey) {
+  expect_scene_error(
+      minimal_with("stiffness_N_per_m = [1.0", "stifness_N_per_m = [1.0"),
+      {"elements[1].stifness_N_per_m", "unknown key", "did you mean 'stiffness_N_per_m'?"});
+  expect_scene_error(minimal_with("[simulation]", "[simulaton]"),
+                     {": simulaton: unknown key", "did you mean 'simulation'?"});
+}
+
+TEST(SceneLoader, KeyOfAnotherElementTypeIsRejected) {
+  expect_scene_error(
+      minimal_with("actuator_force_N = [0.0, 5.0, 0.0]", "actuator_moment_N_m = [0.0, 5.0, 0.0]"),
+      {"elements[1].actuator_moment_N_m", "expected no actuator_moment_N_m on a spring_damper_3d"});
+}
+
+TEST(SceneLoader, BadEnumString) {
+  expect_scene_error(minimal_with("type = \"clothoid\"", "type = \"clothiod\""),
+                     {"track.segments[1].type", "expected one of 'tangent', 'clothoid', 'arc'",
+                      "got 'clothiod'", "did you mean 'clothoid'?"});
+}
+
+TEST(SceneLoader, TomlSyntaxErrorReportsLineAndColumn) {
+  // Line 5 of kMinimalScene (it starts with a newline) is reference_arc_length_m.
+  expect_scene_error(
+      minimal_with("reference_arc_length_m = 600.0", "reference_arc_length_m = = 600.0"),
+      {"line 5, column", "expected valid TOML"});
+}
+
+TEST(SceneLoader, UnknownFreeCoordinateAndDuplicates) {
+  expect_scene_error(minimal_with("free = [\"yaw\", \"y\"]", "free = [\"yaw\", \"lateral\"]"),
+                     {"bodies[2].free[1]", "expected one of 'x', 'y', 'z', 'roll', 'pitch', 'yaw'",
+                      "got 'lateral'"});
+  expect_scene_error(
+      minimal_with("free = [\"yaw\", \"y\"]", "free = [\"yaw\", \"y\", \"yaw\"]"),
+      {"bodies[2].free[2]", "expected each coordinate at most once", "'yaw' a second time"});
+}
+
+TEST(SceneLoader, ClothoidNeedsExactlyOneEndCurvature) {
+  expect_scene_error(
+      minimal_with("end_radius_m = 1000.0", "end_radius_m = 1000.0\nend_curvature_per_m = 0.001"),
+      {"track.segments[1]:", "expected exactly one of end_radius_m", "got both"});
+  expect_scene_error(minimal_with("end_radius_m = 1000.0\nturn = \"left\"", ""),
+                     {"track.segments[1]:", "expected exactly one of end_radius_m", "got neither"});
+}
+
+TEST(SceneLoader, RequiredKeysOfTheChosenContactModel) {
+  expect_scene_error(minimal_with("normal = \"hertz\"", "normal = \"prescribed\""),
+                     {"contacts.cone.prescribed_wheel_load_N", "expected a number (N)",
+                      "required when normal = 'prescribed'"});
+  expect_scene_error(minimal_with("tangential = \"kalker_hertz\"", "tangential = \"constant\""),
+                     {"contacts.cone.f11_N", "required when tangential = 'constant'"});
+  expect_scene_error(
+      minimal_with("geometry = \"knife_edge_cone\"", "geometry = \"linear_conicity\""),
+      {"contacts.cone.conicity", "required when geometry = 'linear_conicity'"});
+}
+
+TEST(SceneLoader, RigidBodyMustNotHaveContact) {
+  expect_scene_error(
+      minimal_with("free = [\"yaw\", \"y\"]", "free = [\"yaw\", \"y\"]\ncontact = \"cone\""),
+      {"bodies[2].contact", "expected no contact on a rigid_body", "got a string 'cone'"});
+}
+
+// --- Semantic checks ---------------------------------------------------------------
+
+TEST(SceneLoader, NegativeMass) {
+  expect_scene_error(minimal_with("mass_kg = 3020.0", "mass_kg = -3"),
+                     {"bodies[2].mass_kg", "expected a positive number (kg)", "got -3"});
+}
+
+TEST(SceneLoader, NonPositiveDefiniteInertia) {
+  expect_scene_error(minimal_with("inertia_kg_m2 = [2130.912, 4063.712, 4063.712]",
+                                  "inertia_kg_m2 = [1.0, 1.0, 5.0]"),
+                     {"bodies[2].inertia_kg_m2", "expected principal moments with Ji + Jj >= Jk",
+                      "not a physical (positive-definite) inertia"});
+  expect_scene_error(minimal_with("inertia_kg_m2 = [2130.912, 4063.712, 4063.712]",
+                                  "inertia_kg_m2 = [1.0, 0.0, 1.0]"),
+                     {"bodies[2].inertia_kg_m2", "expected positive principal moments"});
+}
+
+TEST(SceneLoader, NonAxisymmetricWheelset) {
+  expect_scene_error(minimal_with("inertia_kg_m2 = [799.35, 93.75, 799.35]\ntrack_offset_m = -3.0",
+                                  "inertia_kg_m2 = [799.35, 93.75, 850.0]\ntrack_offset_m = -3.0"),
+                     {"bodies[1].inertia_kg_m2", "expected Jx = Jz",
+                      "the model drops its spin angle", "got Jx = 799.35, Jz = 850"});
+}
+
+TEST(SceneLoader, UnknownBodyInElement) {
+  expect_scene_error(minimal_with("body1 = \"wheelset2\"", "body1 = \"wheelset3\""),
+                     {"elements[2].body1", "unknown body 'wheelset3'",
+                      "(bodies: wheelset1, wheelset2, bogie1; or 'track')"});
+}
+
+TEST(SceneLoader, ElementBodiesMustDiffer) {
+  expect_scene_error(minimal_with("body1 = \"wheelset1\"", "body1 = \"bogie1\""),
+                     {"elements[0].body2", "expected a body other than body1"});
+  expect_scene_error(minimal_with("body2 = \"bogie1\"\npoint1_m = [0.0, 0.0, 0.5]",
+                                  "body2 = \"track\"\npoint1_m = [0.0, 0.0, 0.5]"),
+                     {"elements[1].body2", "only body1 may be 'track'"});
+}
+
+TEST(SceneLoader, NegativeStiffness) {
+  expect_scene_error(
+      minimal_with("stiffness_N_per_m = [1.0, 2.0, 3.0]", "stiffness_N_per_m = [1.0, -2.0, 3.0]"),
+      {"elements[1].stiffness_N_per_m", "expected three numbers >= 0 (N/m)", "got [1, -2, 3]"});
+}
+
+TEST(SceneLoader, ZeroSpeedWithCreepForces) {
+  expect_scene_error(minimal_with("speed_m_per_s = 20.0", "speed_m_per_s = 0.0"),
+                     {"scene.speed_m_per_s", "expected > 0 when creep forces are on",
+                      "creepages are divided by the speed", "got 0"});
+}
+
+TEST(SceneLoader, ZeroSpeedWithoutCreepForcesIsAllowed) {
+  const std::string at_rest =
+      replaced(minimal_with("tangential = \"kalker_hertz\"", "tangential = \"none\""),
+               "speed_m_per_s = 20.0", "speed_m_per_s = 0.0");
+  EXPECT_DOUBLE_EQ(parse_scene(at_rest, kSource).speed_m_per_s, 0.0);
+}
+
+TEST(SceneLoader, ValidateSceneCatchesCommandLineOverride) {
+  SceneSpec scene = parse_scene(kMinimalScene, kSource);
+  scene.speed_m_per_s = -5.0;
+  try {
+    validate_scene(scene);
+    ADD_FAILURE() << "expected a SceneError";
+  } catch (const SceneError& error) {
+    EXPECT_NE(
+        std::string(error.what()).find("cases/minimal.toml: scene.speed_m_per_s: expected > 0"),
+        std::string::npos)
+        << error.what();
+  }
+}
+
+TEST(SceneLoader, UnknownContact) {
+  expect_scene_error(
+      minimal_with("contact = \"cone\"\ninitial_offset", "contact = \"cylinder\"\ninitial_offset"),
+      {"bodies[0].contact", "unknown contact 'cylinder' (contacts: cone)"});
+}
+
+TEST(SceneLoader, ReservedAndDuplicateBodyNames) {
+  expect_scene_error(minimal_with("name = \"bogie1\"", "name = \"track\""),
+                     {"bodies[2].name", "expected a name other than 'track'"});
+  expect_scene_error(
+      minimal_with("name = \"wheelset2\"", "name = \"wheelset1\""),
+      {"bodies[1].name", "expected a unique body name", "already the name of bodies[0]"});
+}
+
+TEST(SceneLoader, ContactNumbersOutOfRange) {
+  expect_scene_error(
+      minimal_with("cone_angle_rad = 0.12", "cone_angle_rad = 0.6"),
+      {"contacts.cone.cone_angle_rad", "expected a cone angle in (0, 0.5) rad", "got 0.6"});
+  expect_scene_error(
+      minimal_with("cone_angle_rad = 0.12", "cone_angle_rad = 0.12\nwheel_poisson_ratio = 0.5"),
+      {"contacts.cone.wheel_poisson_ratio", "expected a Poisson ratio in [0, 0.5)"});
+}
+
+TEST(SceneLoader, CantMustBeLessThanRailDistance) {
+  expect_scene_error(minimal_with("end_cant_m = 0.05", "end_cant_m = 1.6"),
+                     {"track.segments[1].end_cant_m",
+                      "expected |cant| < rail_contact_distance_m = 1.5 m", "got 1.6"});
+}
+
+TEST(SceneLoader, BodiesMustStartOnTheTrack) {
+  expect_scene_error(
+      minimal_with("reference_arc_length_m = 600.0", "reference_arc_length_m = 2.0"),
+      {"bodies[1].track_offset_m", "inside the track [0, 4200] m", "got 2 - 3 = -1 m"});
+}
+
+TEST(SceneLoader, SimulationTimesMustBePositive) {
+  expect_scene_error(minimal_with("t_end_s = 5.0", "t_end_s = 0.0"),
+                     {"simulation.t_end_s", "expected a positive number (s)", "got 0"});
+}
+
+TEST(SceneLoader, MissingFileIsReported) {
+  EXPECT_THROW(load_scene_file("/nonexistent/scene.toml"), SceneError);
+}
+
+// --- Shipped case files ---------------------------------------------------------------
+
+TEST(SceneLoader, EveryCaseFileLoadsWithTheExpectedBodyCount) {
+  const std::map<std::string, size_t> expected_body_counts = {
+      {"thesis_bogie_tangent.toml", 3},   {"thesis_bogie_curve.toml", 3},
+      {"thesis_vehicle_tangent.toml", 7}, {"thesis_vehicle_curve.toml", 7},
+      {"textbook_wheelset.toml", 1},      {"textbook_bogie.toml", 3}};
+  size_t files_seen = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(RAILSTAB_CASES_DIR)) {
+    if (entry.path().extension() != ".toml") continue;
+    ++files_seen;
+    const std::string file = entry.path().filename().string();
+    SCOPED_TRACE(file);
+    SceneSpec scene;
+    ASSERT_NO_THROW(scene = load_scene_file(entry.path().string()));
+    const auto expected = expected_body_counts.find(file);
+    ASSERT_NE(expected, expected_body_counts.end()) << "no expected body count for " << file;
+    EXPECT_EQ(scene.bodies.size(), expected->second);
+  }
+  EXPECT_GE(files_seen, expected_body_counts.size());
+}
+
+TEST(SceneLoader, ThesisVehicleCaseHasMirroredSuspension) {
+  const SceneSpec scene =
+      load_scene_file(std::string(RAILSTAB_CASES_DIR) + "/thesis_vehicle_curve.toml");
+  EXPECT_EQ(scene.elements.size(), 12u);  // 8 primary + 4 secondary springs (Tables 5.3, 5.5)
+  const ElementSpec& secondary = element_named(scene, "secondary_bogie2_right");
+  EXPECT_EQ(secondary.point2_m, Eigen::Vector3d(-9.675, -1.0, -0.73));
+  EXPECT_FALSE(scene.bodies[6].free[int(CoordinateIndex::x)]);  // car body holds the speed
+}
