@@ -41,6 +41,8 @@ void run_simulate(const SimulateArgs& args) {
     std::cerr << "  t = " << t << " / " << opt.t_end_s << " s\n";
   };
   const Trajectory traj = integrate(model, perturbed_initial_state(scene), opt);
+  if (!traj.stopped_early.empty())
+    std::cout << "stopped early: " << traj.stopped_early << "\n";
 
   const std::string base =
       (std::filesystem::path(args.out_dir) / (model.name + "_" +
@@ -52,7 +54,7 @@ void run_simulate(const SimulateArgs& args) {
   if (args.plots)
     for (const std::string& png : plot_time_histories(model, csv, base))
       std::cout << "wrote " << png << "\n";
-  const double simulated = opt.t_end_s - opt.t_start_s;
+  const double simulated = traj.times_s.back() - opt.t_start_s;
   std::cout << "integrator " << integrator_name(opt.kind) << " rtol " << opt.relative_tolerance
             << " atol " << opt.absolute_tolerance << ": " << traj.stats.steps << " steps, "
             << traj.stats.rhs_evaluations << " rhs evaluations, "

@@ -11,7 +11,8 @@
 // contact point P is where the wire crosses the wheelset's vertical plane
 // x_I = 0 (so a yawed wheelset's contact does not move longitudinally: the
 // knife-edge approximation). The penetration along the cone normal is
-//   delta = (r(eta) - rho) cos(gamma),  rho = distance of P from the axle.
+//   delta = (r(eta) - rho) cos(gamma),  rho = distance of P from the axle,
+// and forces act, and slip is measured, at the middle of the overlap.
 // linear_conicity: rolling radius r0 + side*lambda*y, contact point
 // (0, side*e0, -r) in I, normal along the track normal, no gravitational
 // stiffness; delta = depth of that point below the track plane.
@@ -64,12 +65,15 @@ WheelContact<T> evaluate_wheel_contact(const ModelContact& contact, const BodyMo
     const T yaw = ws.q(5);
     const T lambda = w.x() - tan(yaw) * (sd * e0 - w.y());
     const Vec3<T> P_T(lambda, sd * e0, T(0));
-    out.point_I = R_IT * (P_T - w);
-    const T eta = out.point_I.y();
-    const T rho = -out.point_I.z();
+    const Vec3<T> wire_I = R_IT * (P_T - w);
+    const T eta = wire_I.y();
+    const T rho = -wire_I.z();
     out.rolling_radius_m = T(r0) + T(tg) * (T(e0) - sd * eta);
     out.penetration_m = (out.rolling_radius_m - rho) * T(cg);
     nu_I = Vec3<T>(T(0), -sd * sg, T(cg));
+    // The contact point is the middle of the overlap (wheel and rail share
+    // the approach), half-way from the wire point to the wheel surface.
+    out.point_I = wire_I - T(0.5) * out.penetration_m * nu_I;
   } else {
     out.rolling_radius_m = T(r0) + sd * T(spec.conicity) * w.y();
     out.point_I = Vec3<T>(T(0), sd * e0, -out.rolling_radius_m);

@@ -25,9 +25,28 @@ std::string integrator_name(IntegratorKind kind) {
 
 namespace {
 
+// Validity limits as CVODE root functions: g = c^2 - y^2 for every wheelset
+// with a free lateral coordinate (c: flange clearance of its contact).
+struct LateralLimit {
+  int state;
+  double clearance_m;
+  std::string body;
+};
+
+std::vector<LateralLimit> lateral_limits(const Model& model) {
+  std::vector<LateralLimit> limits;
+  for (const ModelBody& b : model.bodies) {
+    const int k = b.state_index[int(CoordinateIndex::y)];
+    if (b.contact >= 0 && k >= 0)
+      limits.push_back({k, model.contacts[b.contact].spec.flange_clearance_m, b.name});
+  }
+  return limits;
+}
+
 struct CallbackData {
   const Model* model;
   std::string error;  // first failure inside a callback
+  std::vector<LateralLimit> limits;
 };
 
 Eigen::Map<Eigen::VectorXd> as_eigen(N_Vector v) {
@@ -41,6 +60,16 @@ int rhs_callback(realtype t, N_Vector y, N_Vector ydot, void* user) {
   } catch (const std::exception& e) {
     if (data->error.empty()) data->error = e.what();
     return 1;  // recoverable: CVODE retries with a smaller step
+  }
+  return 0;
+}
+
+int root_callback(realtype, N_Vector y, realtype* g, void* user) {
+  auto* data = static_cast<CallbackData*>(user);
+  const realtype* x = N_VGetArrayPointer(y);
+  for (size_t i = 0; i < data->limits.size(); ++i) {
+    const LateralLimit& l = data->limits[i];
+    g[i] = l.clearance_m * l.clearance_m - x[l.state] * x[l.state];
   }
   return 0;
 }
@@ -86,7 +115,7 @@ Trajectory integrate(const Model& model, const Eigen::VectorXd& x0,
                      const IntegrationOptions& options) {
   const auto wall_start = std::chrono::steady_clock::now();
   const long n = x0.size();
-  CallbackData data{&model, {}};
+  CallbackData data{&model, {}, lateral_limits(model)};
   CvodeRun run;
   check(SUNContext_Create(nullptr, &run.ctx), "SUNContext_Create");
   run.y = N_VNew_Serial(n, run.ctx);
@@ -103,6 +132,8 @@ Trajectory integrate(const Model& model, const Eigen::VectorXd& x0,
   run.LS = SUNLinSol_Dense(run.y, run.A, run.ctx);
   check(CVodeSetLinearSolver(run.mem, run.LS, run.A), "CVodeSetLinearSolver");
   check(CVodeSetJacFn(run.mem, jacobian_callback), "CVodeSetJacFn");
+  if (!data.limits.empty())
+    check(CVodeRootInit(run.mem, int(data.limits.size()), root_callback), "CVodeRootInit");
 
   Trajectory traj;
   traj.times_s.push_back(options.t_start_s);
@@ -123,6 +154,20 @@ Trajectory integrate(const Model& model, const Eigen::VectorXd& x0,
     }
     traj.times_s.push_back(t_reached);
     traj.states.push_back(as_eigen(run.y));
+    if (flag == CV_ROOT_RETURN) {
+      std::vector<int> found(data.limits.size());
+      CVodeGetRootInfo(run.mem, found.data());
+      for (size_t r = 0; r < found.size(); ++r)
+        if (found[r] != 0) {
+          std::ostringstream msg;
+          msg << data.limits[r].body << " lateral shift reached the flange clearance "
+              << data.limits[r].clearance_m << " m at t = " << t_reached
+              << " s: flange contact is outside the model's validity";
+          traj.stopped_early = msg.str();
+          break;
+        }
+      break;
+    }
     const auto now = std::chrono::steady_clock::now();
     if (options.progress && now - last_report > std::chrono::seconds(1)) {
       options.progress(t_reached);

@@ -38,6 +38,9 @@ struct Trajectory {
   std::vector<double> times_s;
   std::vector<Eigen::VectorXd> states;
   IntegrationStats stats;
+  // Set when the run ended before t_end at a validity limit, e.g.
+  // "wheelset1 lateral shift reached the flange clearance 0.0075 m at t = 3.21 s".
+  std::string stopped_early;
 };
 
 // Throws std::runtime_error with SUNDIALS' reason and the time reached.

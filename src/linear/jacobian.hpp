@@ -3,7 +3,7 @@
 // differentiation: the state is seeded kAdChunk columns at a time with unit
 // directions, so an n-state Jacobian costs ceil(n / kAdChunk) AD evaluations
 // and no truncation error. Central differences are here only as the
-// reference the tests and benchmarks compare against (never used in the
+// reference the tests and benchmarks compare against (5-point stencil) (never used in the
 // product path).
 #include "model/model.hpp"
 

@@ -46,7 +46,7 @@ std::vector<std::string> plot_time_histories(const Model& model, const std::stri
   std::vector<std::string> pngs;
   write_file_atomically(script, [&](std::ostream& gp) {
     gp << "set datafile separator ','\n"
-       << "set terminal pngcairo size 900,520 font 'Sans,10'\n"
+       << "set terminal pngcairo size 900,520 font 'Sans,10' noenhanced\n"
        << "set grid\nset key outside right\nset xlabel 'time [s]'\n";
     for (const PlotSpec& p : plots) {
       std::vector<int> cols;

@@ -77,6 +77,10 @@ struct ContactSpec {
   NormalForceKind normal = NormalForceKind::hertz;
   double prescribed_wheel_load_N = 0.0;   // normal = prescribed
   double rail_head_transverse_radius_m = 0.30;  // ERRATA 8
+  // Validity limit of the flangeless contact models: a wheelset whose lateral
+  // shift exceeds it would be in flange contact, which is not modelled, so the
+  // time integration stops there (choice: a typical nominal flange clearance).
+  double flange_clearance_m = 0.0075;
   double wheel_young_modulus_Pa = 2.1e11;
   double wheel_poisson_ratio = 0.25;
   double rail_young_modulus_Pa = 2.1e11;
