@@ -15,8 +15,8 @@
 //
 // rotational_spring_damper: theta = rotation vector of R_W1^T R_W2 (in frame
 // 1), m = -K theta - C w_rel - m_act acts on body 2, its opposite on body 1.
-// Exactly conservative for isotropic K (V = 1/2 k |theta|^2); for anisotropic
-// K conservative to second order in theta.
+// Exactly conservative for isotropic K and no constant moment
+// (V = 1/2 k |theta|^2); otherwise conservative to first order in theta.
 #include "elements/attachment.hpp"
 
 namespace railstab {
