@@ -1,0 +1,71 @@
+// Benchmark of the model's hot path on the thesis vehicle (and bogie):
+// one right-hand side, one AD Jacobian, one forward-difference Jacobian,
+// and a 20 s time-domain run. Prints timings and ratios.
+//   build/bench_model [cases-dir]
+#include "cli/scene_setup.hpp"
+#include "integrate/integrator.hpp"
+#include "linear/jacobian.hpp"
+#include "model/equations_of_motion.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <functional>
+#include <string>
+
+using namespace railstab;
+
+namespace {
+
+// Mean seconds per call over enough repetitions for ~0.3 s.
+double time_per_call(const std::function<void()>& f) {
+  using clock = std::chrono::steady_clock;
+  long reps = 1;
+  for (;;) {
+    const auto t0 = clock::now();
+    for (long i = 0; i < reps; ++i) f();
+    const double s = std::chrono::duration<double>(clock::now() - t0).count();
+    if (s > 0.3) return s / double(reps);
+    reps *= 4;
+  }
+}
+
+void bench_scene(const std::string& path) {
+  const PreparedScene scene = prepare_scene(path, {});
+  const Model& model = scene.model;
+  const Eigen::VectorXd x = perturbed_initial_state(scene);
+  const auto frames = track_frames_at(model, 0.0);
+  Eigen::VectorXd xdot;
+  const double t_rhs = time_per_call([&] { evaluate_rhs<double>(model, 0.0, frames, x, xdot); });
+  const double t_rhs_frames = time_per_call([&] { xdot = rhs(model, 0.0, x); });
+  const double t_ad = time_per_call([&] { rhs_jacobian_ad(model, 0.0, x); });
+  const double t_fd = time_per_call([&] { rhs_jacobian_forward_difference(model, 0.0, x); });
+  std::printf("%s: %d bodies, %d states\n", model.name.c_str(), int(model.bodies.size()),
+              model.state_size());
+  std::printf("  rhs (frames given)        %10.2f us\n", t_rhs * 1e6);
+  std::printf("  rhs (with track frames)   %10.2f us\n", t_rhs_frames * 1e6);
+  std::printf("  AD Jacobian               %10.2f us  (%.1f rhs)\n", t_ad * 1e6, t_ad / t_rhs);
+  std::printf("  forward-diff Jacobian     %10.2f us  (%.1f rhs)\n", t_fd * 1e6, t_fd / t_rhs);
+  std::printf("  ratio AD / forward diff   %10.2f\n", t_ad / t_fd);
+
+  IntegrationOptions opt;
+  opt.t_end_s = 20.0;
+  opt.output_interval_s = 0.01;
+  opt.relative_tolerance = scene.spec.simulation.relative_tolerance;
+  opt.absolute_tolerance = scene.spec.simulation.absolute_tolerance;
+  const Trajectory traj = integrate(model, x, opt);
+  const double simulated = traj.times_s.back();
+  std::printf("  20 s run (CVODE BDF, rtol %.0e): wall %.3f s, real-time factor %.1f, "
+              "%ld steps, %ld rhs, %ld Jacobians%s\n",
+              opt.relative_tolerance, traj.stats.wall_seconds, simulated / traj.stats.wall_seconds,
+              traj.stats.steps, traj.stats.rhs_evaluations, traj.stats.jacobian_evaluations,
+              traj.stopped_early.empty() ? "" : " (stopped early)");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::string dir = argc > 1 ? argv[1] : "cases";
+  for (const char* name : {"thesis_bogie_tangent", "thesis_vehicle_tangent", "thesis_vehicle_curve"})
+    bench_scene(dir + "/" + name + ".toml");
+  return 0;
+}
