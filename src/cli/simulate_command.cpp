@@ -51,8 +51,11 @@ void run_simulate(const SimulateArgs& args) {
   const std::string csv = args.csv.empty() ? base + ".csv" : args.csv;
   write_trajectory_csv(csv, model, traj);
   std::cout << "wrote " << csv << "\n";
+  const std::string roll_csv = base + "_absolute_roll.csv";
+  write_absolute_roll_csv(roll_csv, model, traj);
+  std::cout << "wrote " << roll_csv << "\n";
   if (args.plots)
-    for (const std::string& png : plot_time_histories(model, csv, base))
+    for (const std::string& png : plot_time_histories(model, csv, roll_csv, base))
       std::cout << "wrote " << png << "\n";
   const double simulated = traj.times_s.back() - opt.t_start_s;
   std::cout << "integrator " << integrator_name(opt.kind) << " rtol " << opt.relative_tolerance

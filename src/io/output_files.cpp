@@ -1,5 +1,8 @@
 #include "io/output_files.hpp"
 
+#include "model/equations_of_motion.hpp"
+
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -54,6 +57,27 @@ void write_trajectory_csv(const std::string& path, const Model& model, const Tra
           }
           out << ',' << q6(c, b);
         }
+      out << '\n';
+    }
+  });
+}
+
+void write_absolute_roll_csv(const std::string& path, const Model& model,
+                             const Trajectory& traj) {
+  write_file_atomically(path, [&](std::ostream& out) {
+    out << "time_s";
+    for (const ModelBody& b : model.bodies) out << ',' << b.name << ".absolute_roll_rad";
+    out << '\n' << std::setprecision(10);
+    std::vector<BodyMotion<double>> motions;
+    for (size_t i = 0; i < traj.times_s.size(); ++i) {
+      const double t = traj.times_s[i];
+      compute_all_body_motions<double>(model, t, track_frames_at(model, t), traj.states[i],
+                                       motions);
+      out << t;
+      for (const BodyMotion<double>& m : motions) {
+        const Eigen::Matrix3d R_WB = m.R_WI * m.R_IB;
+        out << ',' << std::asin(std::clamp(R_WB(2, 1), -1.0, 1.0));
+      }
       out << '\n';
     }
   });

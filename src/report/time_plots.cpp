@@ -20,7 +20,9 @@ void run_gnuplot(const std::string& script_path) {
 namespace {
 
 struct PlotSpec {
-  std::string suffix, title, ylabel;
+  std::string suffix;
+  bool absolute_roll_file;  // from the absolute-roll CSV (one column per body)
+  std::string title, ylabel;
   int coordinate;  // 0..5
   double scale;    // to the plotted unit
   std::function<bool(const ModelBody&)> include;
@@ -29,18 +31,21 @@ struct PlotSpec {
 }  // namespace
 
 std::vector<std::string> plot_time_histories(const Model& model, const std::string& csv_path,
+                                             const std::string& absolute_roll_csv_path,
                                              const std::string& output_prefix) {
   const auto wheelsets = [](const ModelBody& b) { return b.is_wheelset; };
   const auto others = [](const ModelBody& b) { return !b.is_wheelset; };
   const auto all = [](const ModelBody&) { return true; };
   const std::vector<PlotSpec> plots = {
-      {"wheelset_lateral", "Lateral shift of the wheelsets", "lateral shift y [mm]", 1, 1e3,
+      {"wheelset_lateral", false, "Lateral shift of the wheelsets", "lateral shift y [mm]", 1, 1e3,
        wheelsets},
-      {"wheelset_yaw", "Yaw angle of the wheelsets", "yaw [mrad]", 5, 1e3, wheelsets},
-      {"body_lateral", "Lateral shift of bogie frames and car body", "lateral shift y [mm]", 1,
+      {"wheelset_yaw", false, "Yaw angle of the wheelsets", "yaw [mrad]", 5, 1e3, wheelsets},
+      {"body_lateral", false, "Lateral shift of bogie frames and car body", "lateral shift y [mm]", 1,
        1e3, others},
-      {"roll", "Roll angle of all bodies (relative to their track frames)", "roll [mrad]", 3, 1e3,
-       all},
+      {"roll", false, "Roll angle of all bodies (relative to their track frames)", "roll [mrad]", 3,
+       1e3, all},
+      {"absolute_roll", true, "Roll angle of all bodies in the fixed frame (follows the cant)",
+       "roll [mrad]", 0, 1e3, all},
   };
   const std::string script = output_prefix + "_plots.gp";
   std::vector<std::string> pngs;
@@ -53,7 +58,7 @@ std::vector<std::string> plot_time_histories(const Model& model, const std::stri
       std::vector<std::string> names;
       for (size_t b = 0; b < model.bodies.size(); ++b)
         if (p.include(model.bodies[b])) {
-          cols.push_back(2 + int(b) * 6 + p.coordinate);
+          cols.push_back(p.absolute_roll_file ? 2 + int(b) : 2 + int(b) * 6 + p.coordinate);
           names.push_back(model.bodies[b].name);
         }
       if (cols.empty()) continue;
@@ -64,7 +69,8 @@ std::vector<std::string> plot_time_histories(const Model& model, const std::stri
          << model.speed_m_per_s << " m/s'\n"
          << "set ylabel '" << p.ylabel << "'\nplot ";
       for (size_t i = 0; i < cols.size(); ++i)
-        gp << (i ? ", " : "") << "'" << csv_path << "' skip 1 using 1:($" << cols[i] << "*"
+        gp << (i ? ", " : "") << "'" << (p.absolute_roll_file ? absolute_roll_csv_path : csv_path)
+           << "' skip 1 using 1:($" << cols[i] << "*"
            << p.scale << ") with lines lw 1.5 title '" << names[i] << "'";
       gp << "\n";
     }

@@ -11,6 +11,7 @@ namespace railstab {
 
 // Returns the PNG paths written. Throws std::runtime_error if gnuplot fails.
 std::vector<std::string> plot_time_histories(const Model& model, const std::string& csv_path,
+                                             const std::string& absolute_roll_csv_path,
                                              const std::string& output_prefix);
 
 // Runs gnuplot on a script file; throws with gnuplot's exit status on failure.

@@ -1,0 +1,532 @@
+#include "eigen/eigen_analysis.hpp"
+
+#include <arpack/arpack.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <mutex>
+#include <numbers>
+#include <random>
+#include <stdexcept>
+#include <string>
+
+namespace railstab {
+
+namespace {
+
+using Complex = std::complex<double>;
+
+// ---------------------------------------------------------------------------
+// Eigenpair bookkeeping shared by both solvers
+// ---------------------------------------------------------------------------
+
+// Unit 2-norm, and the phase that makes the largest-magnitude component real
+// positive: eigenvectors are only defined up to a complex scalar, and a fixed
+// convention lets callers compare or plot them without further work.
+Eigen::VectorXcd with_canonical_phase(Eigen::VectorXcd v) {
+  const double norm = v.norm();
+  if (norm == 0.0) return v;
+  Eigen::Index peak = 0;
+  v.cwiseAbs().maxCoeff(&peak);
+  const Complex unit_phase = v(peak) / std::abs(v(peak));
+  return v * (std::conj(unit_phase) / norm);
+}
+
+double relative_residual(const Eigen::MatrixXd& A, double norm_A, Complex lambda,
+                         const Eigen::VectorXcd& v) {
+  const double scale = norm_A * v.norm();
+  if (scale == 0.0) return 0.0;
+  const Eigen::VectorXcd r = A.cast<Complex>() * v - lambda * v;
+  return r.norm() / scale;
+}
+
+EigenPair make_eigenpair(const Eigen::MatrixXd& A, double norm_A, Complex lambda,
+                         const Eigen::VectorXcd& raw_vector) {
+  EigenPair pair{lambda, with_canonical_phase(raw_vector), 0.0};
+  pair.residual = relative_residual(A, norm_A, lambda, pair.vector);
+  return pair;
+}
+
+// Least stable first: that is the order a stability report reads in.
+void sort_by_descending_real_part(std::vector<EigenPair>& pairs) {
+  std::sort(pairs.begin(), pairs.end(), [](const EigenPair& a, const EigenPair& b) {
+    if (a.value.real() != b.value.real()) return a.value.real() > b.value.real();
+    return a.value.imag() > b.value.imag();
+  });
+}
+
+void require_square_and_finite(const Eigen::MatrixXd& A, const char* who) {
+  if (A.rows() != A.cols())
+    throw std::invalid_argument(std::string(who) + ": matrix must be square, got " +
+                                std::to_string(A.rows()) + " x " + std::to_string(A.cols()));
+  if (A.size() == 0) throw std::invalid_argument(std::string(who) + ": matrix is empty");
+  if (!A.allFinite())
+    throw std::invalid_argument(std::string(who) + ": matrix has NaN or infinite entries");
+}
+
+// ---------------------------------------------------------------------------
+// Shift-invert operator
+// ---------------------------------------------------------------------------
+
+// OP x = Re((A - sigma I)^-1 x), the operator of ARPACK's dnaupd mode 3. For
+// a real shift this is the plain inverse; for a complex shift it is
+// (1/2)[(A - sigma I)^-1 + (A - conj(sigma) I)^-1], a real operator whose
+// eigenvectors are those of A and whose large eigenvalues come from the
+// eigenvalues of A near sigma and conj(sigma).
+// This class is the only place that knows how (A - sigma I) is factorised:
+// a sparse LU (e.g. Eigen::SparseLU<SparseMatrix<complex>>) can replace the
+// dense one without touching the Arnoldi driver.
+class ShiftInvertOperator {
+ public:
+  ShiftInvertOperator(const Eigen::MatrixXd& A, Complex sigma)
+      : lu_(shifted(A, sigma)), rhs_(A.rows()) {
+    // A (near-)singular A - sigma I means sigma sits on an eigenvalue: the
+    // operator is meaningless and the solves would return garbage silently.
+    if (!(lu_.rcond() > 64 * std::numeric_limits<double>::epsilon()))
+      throw std::invalid_argument(
+          "eigen_arpack_shift_invert: A - shift*I is numerically singular (the shift is an "
+          "eigenvalue of A); move the shift slightly");
+  }
+
+  int size() const { return int(rhs_.size()); }
+
+  void apply(const double* x, double* y) {
+    rhs_ = Eigen::Map<const Eigen::VectorXd>(x, size()).cast<Complex>();
+    Eigen::Map<Eigen::VectorXd>(y, size()) = lu_.solve(rhs_).real();
+  }
+
+ private:
+  static Eigen::MatrixXcd shifted(const Eigen::MatrixXd& A, Complex sigma) {
+    Eigen::MatrixXcd S = A.cast<Complex>();
+    S.diagonal().array() -= sigma;
+    return S;
+  }
+
+  Eigen::PartialPivLU<Eigen::MatrixXcd> lu_;
+  Eigen::VectorXcd rhs_;
+};
+
+// ---------------------------------------------------------------------------
+// ARPACK (dnaupd / dneupd) driver
+// ---------------------------------------------------------------------------
+
+std::string naupd_info_meaning(int info) {
+  switch (info) {
+    case 1: return "maximum number of iterations taken before all wanted Ritz values converged";
+    case 3: return "no shifts could be applied during an implicit restart; increase NCV";
+    case -1: return "N must be positive";
+    case -2: return "NEV must be positive";
+    case -3: return "NCV must satisfy NEV + 2 <= NCV <= N";
+    case -4: return "the maximum number of Arnoldi update iterations must be positive";
+    case -5: return "WHICH must be one of LM, SM, LR, SR, LI, SI";
+    case -6: return "BMAT must be I or G";
+    case -7: return "length of private work array WORKL is not sufficient";
+    case -8: return "error return from LAPACK eigenvalue calculation";
+    case -9: return "starting vector is zero";
+    case -10: return "IPARAM(7) must be 1, 2, 3 or 4";
+    case -11: return "IPARAM(7) = 1 and BMAT = G are incompatible";
+    case -12: return "IPARAM(1) must be 0 or 1";
+    case -9999: return "could not build an Arnoldi factorisation (invariant subspace too small)";
+    default: return "unknown ARPACK dnaupd info code";
+  }
+}
+
+std::string neupd_info_meaning(int info) {
+  switch (info) {
+    case 1: return "the Schur form could not be reordered by LAPACK dtrsen";
+    case -1: return "N must be positive";
+    case -2: return "NEV must be positive";
+    case -3: return "NCV must satisfy NEV + 2 <= NCV <= N";
+    case -5: return "WHICH must be one of LM, SM, LR, SR, LI, SI";
+    case -6: return "BMAT must be I or G";
+    case -7: return "length of private work array WORKL is not sufficient";
+    case -8: return "error return from LAPACK dlahqr (real Schur form)";
+    case -9: return "error return from LAPACK dtrevc (eigenvectors)";
+    case -10: return "IPARAM(7) must be 1, 2, 3 or 4";
+    case -11: return "IPARAM(7) = 1 and BMAT = G are incompatible";
+    case -12: return "HOWMNY = S is not implemented";
+    case -13: return "HOWMNY must be A or P when RVEC is true";
+    case -14: return "dnaupd did not find any eigenvalues to sufficient accuracy";
+    case -15: return "dneupd and dnaupd disagree on the number of converged Ritz values";
+    default: return "unknown ARPACK dneupd info code";
+  }
+}
+
+[[noreturn]] void throw_arpack_error(const char* routine, int info, const std::string& meaning,
+                                     const std::string& detail = {}) {
+  throw std::runtime_error(std::string("eigen_arpack_shift_invert: ARPACK ") + routine +
+                           " failed, info = " + std::to_string(info) + " (" + meaning + ")" +
+                           detail);
+}
+
+void validate_arpack_request(const Eigen::MatrixXd& A, const ArpackOptions& opt) {
+  require_square_and_finite(A, "eigen_arpack_shift_invert");
+  const int n = int(A.rows());
+  // ARPACK needs NEV + 2 <= NCV <= N, hence at most n - 2 wanted values.
+  if (opt.n_eigenvalues < 1 || opt.n_eigenvalues > n - 2)
+    throw std::invalid_argument(
+        "eigen_arpack_shift_invert: n_eigenvalues must be in [1, n - 2] = [1, " +
+        std::to_string(n - 2) + "] for n = " + std::to_string(n) + ", got " +
+        std::to_string(opt.n_eigenvalues) + " (use eigen_dense for all eigenvalues)");
+  if (opt.max_iterations < 1)
+    throw std::invalid_argument("eigen_arpack_shift_invert: max_iterations must be positive");
+  if (!(opt.tolerance >= 0.0))
+    throw std::invalid_argument(
+        "eigen_arpack_shift_invert: tolerance must be >= 0 (0 = machine precision)");
+  if (!std::isfinite(opt.shift.real()) || !std::isfinite(opt.shift.imag()))
+    throw std::invalid_argument("eigen_arpack_shift_invert: shift must be finite");
+}
+
+struct ArnoldiSizes {
+  int nev;  // Ritz values of OP asked from ARPACK
+  int ncv;  // Arnoldi basis size
+};
+
+// How many eigenvalues of OP to ask for so that the wanted number of
+// eigenvalues of A nearest sigma is among them:
+//  - complex shift: every eigenvalue of A near sigma comes with its conjugate
+//    (near conj(sigma)) as a conjugate pair of OP, so twice as many;
+//  - the magnitude order of OP = Re((A - sigma I)^-1) is only approximately
+//    the distance order to sigma, so a few more as margin.
+ArnoldiSizes choose_arnoldi_sizes(int n, int wanted, Complex sigma) {
+  const bool complex_shift = sigma.imag() != 0.0;
+  const int margin = 4 + wanted / 2;
+  const int nev = std::min(n - 2, (complex_shift ? 2 * wanted : wanted) + margin);
+  const int ncv = std::min(n, std::max(2 * nev + 1, 20));
+  return {nev, ncv};
+}
+
+// The arrays dnaupd and dneupd share; they must not change between the calls.
+struct ArnoldiWorkspace {
+  ArnoldiWorkspace(int n, ArnoldiSizes s)
+      : n(n),
+        sizes(s),
+        resid(n),
+        basis(std::size_t(n) * s.ncv),
+        workd(3 * std::size_t(n)),
+        workl(3 * std::size_t(s.ncv) * s.ncv + 6 * std::size_t(s.ncv)) {}
+
+  int n;
+  ArnoldiSizes sizes;
+  std::vector<double> resid;
+  std::vector<double> basis;  // V, n x ncv, column major
+  std::vector<double> workd;
+  std::vector<double> workl;
+  a_int iparam[11] = {};
+  a_int ipntr[14] = {};
+};
+
+// A fixed pseudo-random start vector instead of ARPACK's own: ARPACK's seed
+// is Fortran SAVE state that advances from call to call, which would make a
+// speed sweep depend on how many solves ran before.
+void set_reproducible_start_vector(std::vector<double>& resid) {
+  std::mt19937_64 generator(20240611);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  for (double& r : resid) r = uniform(generator);
+}
+
+constexpr arpack::which kLargestMagnitude = arpack::which::largest_magnitude;
+
+// Implicitly restarted Arnoldi on OP until the wanted Ritz values converge.
+void run_arnoldi(ShiftInvertOperator& op, ArnoldiWorkspace& ws, const ArpackOptions& opt) {
+  set_reproducible_start_vector(ws.resid);
+  ws.iparam[0] = 1;                   // exact shifts
+  ws.iparam[2] = opt.max_iterations;  // restart limit
+  ws.iparam[6] = 3;                   // shift-invert, OP = Re((A - sigma I)^-1)
+  a_int ido = 0;
+  a_int info = 1;  // 1: use the start vector in resid
+  while (true) {
+    arpack::naupd(ido, arpack::bmat::identity, ws.n, kLargestMagnitude, ws.sizes.nev,
+                  opt.tolerance, ws.resid.data(), ws.sizes.ncv, ws.basis.data(), ws.n,
+                  ws.iparam, ws.ipntr, ws.workd.data(), ws.workl.data(), a_int(ws.workl.size()),
+                  info);
+    if (ido == 99) break;
+    const double* x = ws.workd.data() + ws.ipntr[0] - 1;
+    double* y = ws.workd.data() + ws.ipntr[1] - 1;
+    if (ido == -1 || ido == 1) {
+      op.apply(x, y);
+    } else if (ido == 2) {
+      std::copy(x, x + ws.n, y);  // B = I
+    } else {
+      throw std::runtime_error("eigen_arpack_shift_invert: unexpected ARPACK request ido = " +
+                               std::to_string(ido));
+    }
+  }
+  if (info != 0)
+    throw_arpack_error("dnaupd", info, naupd_info_meaning(info),
+                       "; converged " + std::to_string(ws.iparam[4]) + " of " +
+                       std::to_string(ws.sizes.nev) + " Ritz values after " +
+                       std::to_string(ws.iparam[2]) + " restarts");
+}
+
+// Orthonormal basis (n x nconv) of the converged invariant subspace of OP,
+// i.e. ARPACK's Schur vectors (dneupd with HOWMNY = 'P').
+Eigen::MatrixXd converged_schur_basis(ArnoldiWorkspace& ws, const ArpackOptions& opt) {
+  const int nev = ws.sizes.nev;
+  const int ncv = ws.sizes.ncv;
+  std::vector<a_int> select(ncv);
+  std::vector<double> ritz_re(nev + 1), ritz_im(nev + 1), workev(3 * std::size_t(ncv));
+  std::vector<double> schur(std::size_t(ws.n) * (nev + 1));
+  a_int info = 0;
+  arpack::neupd(1, arpack::howmny::schur_vectors, select.data(), ritz_re.data(), ritz_im.data(),
+                schur.data(), ws.n, opt.shift.real(), opt.shift.imag(), workev.data(),
+                arpack::bmat::identity, ws.n, kLargestMagnitude, nev, opt.tolerance,
+                ws.resid.data(), ncv, ws.basis.data(), ws.n, ws.iparam, ws.ipntr,
+                ws.workd.data(), ws.workl.data(), a_int(ws.workl.size()), info);
+  if (info != 0) throw_arpack_error("dneupd", info, neupd_info_meaning(info));
+  const int converged = std::min<int>(ws.iparam[4], nev + 1);
+  return Eigen::Map<Eigen::MatrixXd>(schur.data(), ws.n, converged);
+}
+
+// Eigenpairs of A from an invariant subspace of OP. OP is a rational function
+// of A, so the converged invariant subspace of OP is invariant under A too,
+// and the projected matrix Q^T A Q has exactly the corresponding eigenvalues
+// of A (Rayleigh-Ritz: the block form of the Rayleigh quotient v^H A v / v^H v
+// that ARPACK's remark 3 asks for when sigma is complex). Working on the
+// subspace rather than on ARPACK's individual Ritz vectors matters: an
+// eigenvalue lambda of A on the circle |lambda - Re sigma| = |Im sigma|
+// (which passes through sigma) gives OP eigenvalues for lambda and
+// conj(lambda) that coincide, so the individual Ritz vectors of OP may be
+// arbitrary mixtures of the two eigenvectors, while the subspace is exact.
+std::vector<EigenPair> rayleigh_ritz_pairs(const Eigen::MatrixXd& A, double norm_A,
+                                           const Eigen::MatrixXd& Q) {
+  const Eigen::MatrixXd AQ = A * Q;
+  const Eigen::MatrixXd projected = Q.transpose() * AQ;
+  Eigen::EigenSolver<Eigen::MatrixXd> small(projected, true);
+  if (small.info() != Eigen::Success)
+    throw std::runtime_error(
+        "eigen_arpack_shift_invert: eigen-decomposition of the projected matrix failed");
+  const Eigen::MatrixXcd vectors = Q.cast<Complex>() * small.eigenvectors();
+  std::vector<EigenPair> pairs;
+  pairs.reserve(std::size_t(projected.rows()));
+  for (Eigen::Index j = 0; j < projected.rows(); ++j)
+    pairs.push_back(make_eigenpair(A, norm_A, small.eigenvalues()(j), vectors.col(j)));
+  return pairs;
+}
+
+// The `wanted` pairs nearest sigma, nearest first. If the last one kept has
+// its conjugate partner at the same distance (real shift), the partner is
+// kept too: a conjugate pair is one physical mode.
+std::vector<EigenPair> nearest_to_shift(std::vector<EigenPair> pairs, Complex sigma,
+                                        int wanted) {
+  std::sort(pairs.begin(), pairs.end(), [sigma](const EigenPair& a, const EigenPair& b) {
+    const double da = std::abs(a.value - sigma), db = std::abs(b.value - sigma);
+    if (da != db) return da < db;
+    return a.value.imag() > b.value.imag();
+  });
+  if (int(pairs.size()) <= wanted) return pairs;
+  const EigenPair& last = pairs[std::size_t(wanted) - 1];
+  const EigenPair& next = pairs[std::size_t(wanted)];
+  const double tie = 1e-10 * std::max(1.0, std::abs(last.value));
+  const bool next_is_partner =
+      std::abs(last.value - std::conj(last.value)) > tie &&
+      std::abs(next.value - std::conj(last.value)) <= tie &&
+      std::abs(std::abs(next.value - sigma) - std::abs(last.value - sigma)) <= tie;
+  const bool partner_already_kept =
+      wanted >= 2 &&
+      std::abs(pairs[std::size_t(wanted) - 2].value - std::conj(last.value)) <= tie;
+  pairs.resize(std::size_t(wanted) + (next_is_partner && !partner_already_kept ? 1 : 0));
+  return pairs;
+}
+
+// ARPACK keeps its iteration state in Fortran SAVE variables: two solves on
+// different threads would corrupt each other.
+std::mutex& arpack_mutex() {
+  static std::mutex m;
+  return m;
+}
+
+// ---------------------------------------------------------------------------
+// Mode tracking
+// ---------------------------------------------------------------------------
+
+bool is_upper_oscillatory(const EigenPair& p) {
+  return mode_info(p.value).oscillatory && p.value.imag() > 0.0;
+}
+
+bool is_lower_oscillatory(const EigenPair& p) {
+  return mode_info(p.value).oscillatory && p.value.imag() < 0.0;
+}
+
+std::vector<int> indices_where(const std::vector<EigenPair>& pairs,
+                               bool (*predicate)(const EigenPair&)) {
+  std::vector<int> idx;
+  for (std::size_t i = 0; i < pairs.size(); ++i)
+    if (predicate(pairs[i])) idx.push_back(int(i));
+  return idx;
+}
+
+// Minimum-cost assignment of rows to columns (rows <= columns), Hungarian
+// method with row/column potentials and shortest augmenting paths, O(r^2 c).
+// Returns the column of every row.
+std::vector<int> min_cost_assignment_rows_le_cols(const Eigen::MatrixXd& cost) {
+  const int rows = int(cost.rows()), cols = int(cost.cols());
+  const double inf = std::numeric_limits<double>::infinity();
+  // Index 0 is a virtual column/row that starts each augmenting path.
+  std::vector<double> row_potential(rows + 1, 0.0), col_potential(cols + 1, 0.0);
+  std::vector<int> row_of_col(cols + 1, 0);  // 1-based row, 0 = free
+  std::vector<int> previous_col(cols + 1, 0);
+  for (int row = 1; row <= rows; ++row) {
+    row_of_col[0] = row;
+    int col = 0;
+    std::vector<double> slack(cols + 1, inf);
+    std::vector<bool> visited(cols + 1, false);
+    // Grow the alternating tree until it reaches a free column.
+    do {
+      visited[col] = true;
+      const int tree_row = row_of_col[col];
+      double step = inf;
+      int next_col = 0;
+      for (int c = 1; c <= cols; ++c) {
+        if (visited[c]) continue;
+        const double reduced =
+            cost(tree_row - 1, c - 1) - row_potential[tree_row] - col_potential[c];
+        if (reduced < slack[c]) {
+          slack[c] = reduced;
+          previous_col[c] = col;
+        }
+        if (slack[c] < step) {
+          step = slack[c];
+          next_col = c;
+        }
+      }
+      for (int c = 0; c <= cols; ++c) {
+        if (visited[c]) {
+          row_potential[row_of_col[c]] += step;
+          col_potential[c] -= step;
+        } else {
+          slack[c] -= step;
+        }
+      }
+      col = next_col;
+    } while (row_of_col[col] != 0);
+    // Flip the matched/unmatched edges along the path back to the root.
+    do {
+      const int back = previous_col[col];
+      row_of_col[col] = row_of_col[back];
+      col = back;
+    } while (col != 0);
+  }
+  std::vector<int> col_of_row(rows, -1);
+  for (int c = 1; c <= cols; ++c)
+    if (row_of_col[c] != 0) col_of_row[row_of_col[c] - 1] = c - 1;
+  return col_of_row;
+}
+
+// Row -> column maximising the summed weight; -1 for rows left over when
+// there are more rows than columns.
+std::vector<int> max_weight_assignment(const Eigen::MatrixXd& weight) {
+  if (weight.rows() == 0 || weight.cols() == 0) return std::vector<int>(weight.rows(), -1);
+  if (weight.rows() <= weight.cols()) return min_cost_assignment_rows_le_cols(-weight);
+  const std::vector<int> row_of_col = min_cost_assignment_rows_le_cols(-weight.transpose());
+  std::vector<int> col_of_row(weight.rows(), -1);
+  for (std::size_t c = 0; c < row_of_col.size(); ++c) col_of_row[row_of_col[c]] = int(c);
+  return col_of_row;
+}
+
+// Index in `candidates` of the pair whose eigenvalue is nearest `value`.
+int nearest_value(const std::vector<EigenPair>& pairs, const std::vector<int>& candidates,
+                  Complex value) {
+  int best = -1;
+  double best_distance = std::numeric_limits<double>::infinity();
+  for (int i : candidates) {
+    const double d = std::abs(pairs[std::size_t(i)].value - value);
+    if (d < best_distance) {
+      best_distance = d;
+      best = i;
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------
+// Public functions
+// ---------------------------------------------------------------------------
+
+std::vector<EigenPair> eigen_dense(const Eigen::MatrixXd& A) {
+  require_square_and_finite(A, "eigen_dense");
+  Eigen::EigenSolver<Eigen::MatrixXd> solver(A, true);
+  if (solver.info() != Eigen::Success)
+    throw std::runtime_error("eigen_dense: Eigen::EigenSolver did not converge");
+  const double norm_A = A.norm();
+  std::vector<EigenPair> pairs;
+  pairs.reserve(std::size_t(A.rows()));
+  for (Eigen::Index j = 0; j < A.rows(); ++j)
+    pairs.push_back(
+        make_eigenpair(A, norm_A, solver.eigenvalues()(j), solver.eigenvectors().col(j)));
+  sort_by_descending_real_part(pairs);
+  return pairs;
+}
+
+std::vector<EigenPair> eigen_arpack_shift_invert(const Eigen::MatrixXd& A,
+                                                 const ArpackOptions& opt) {
+  validate_arpack_request(A, opt);
+  const int n = int(A.rows());
+  ShiftInvertOperator op(A, opt.shift);
+  ArnoldiWorkspace workspace(n, choose_arnoldi_sizes(n, opt.n_eigenvalues, opt.shift));
+  Eigen::MatrixXd schur_basis;
+  {
+    std::lock_guard<std::mutex> lock(arpack_mutex());
+    run_arnoldi(op, workspace, opt);
+    schur_basis = converged_schur_basis(workspace, opt);
+  }
+  std::vector<EigenPair> pairs = rayleigh_ritz_pairs(A, A.norm(), schur_basis);
+  if (int(pairs.size()) < opt.n_eigenvalues)
+    throw std::runtime_error("eigen_arpack_shift_invert: ARPACK converged only " +
+                             std::to_string(pairs.size()) + " eigenvalues, " +
+                             std::to_string(opt.n_eigenvalues) + " requested");
+  return nearest_to_shift(std::move(pairs), opt.shift, opt.n_eigenvalues);
+}
+
+ModeInfo mode_info(Complex lambda) {
+  const double magnitude = std::abs(lambda);
+  ModeInfo info;
+  info.frequency_hz = std::abs(lambda.imag()) / (2.0 * std::numbers::pi);
+  info.damping_ratio = magnitude > 0.0 ? -lambda.real() / magnitude : 0.0;
+  info.oscillatory = lambda.imag() != 0.0;
+  return info;
+}
+
+double modal_assurance(const Eigen::VectorXcd& a, const Eigen::VectorXcd& b) {
+  if (a.size() != b.size())
+    throw std::invalid_argument("modal_assurance: vectors differ in length (" +
+                                std::to_string(a.size()) + " vs " + std::to_string(b.size()) +
+                                ")");
+  const double aa = a.squaredNorm(), bb = b.squaredNorm();
+  if (aa == 0.0 || bb == 0.0) return 0.0;
+  return std::norm(a.dot(b)) / (aa * bb);  // Eigen's dot conjugates a: a^H b
+}
+
+std::vector<int> match_modes(const std::vector<EigenPair>& previous,
+                             const std::vector<EigenPair>& current) {
+  const std::vector<int> prev_upper = indices_where(previous, is_upper_oscillatory);
+  const std::vector<int> cur_upper = indices_where(current, is_upper_oscillatory);
+  Eigen::MatrixXd mac(prev_upper.size(), cur_upper.size());
+  for (std::size_t i = 0; i < prev_upper.size(); ++i)
+    for (std::size_t j = 0; j < cur_upper.size(); ++j)
+      mac(Eigen::Index(i), Eigen::Index(j)) = modal_assurance(
+          previous[std::size_t(prev_upper[i])].vector, current[std::size_t(cur_upper[j])].vector);
+  // Hungarian rather than greedy: near a frequency crossing two modes can
+  // both resemble the same current mode, and greedy would let the first one
+  // take it; the optimal assignment decides on the whole set.
+  const std::vector<int> assigned = max_weight_assignment(mac);
+
+  std::vector<int> match(previous.size(), -1);
+  for (std::size_t i = 0; i < prev_upper.size(); ++i)
+    if (assigned[i] >= 0) match[std::size_t(prev_upper[i])] = cur_upper[std::size_t(assigned[i])];
+
+  // Conjugates follow: the Im < 0 half of a pair goes where its partner went.
+  const std::vector<int> cur_lower = indices_where(current, is_lower_oscillatory);
+  for (int i : indices_where(previous, is_lower_oscillatory)) {
+    const int partner = nearest_value(previous, prev_upper, std::conj(previous[std::size_t(i)].value));
+    if (partner < 0 || match[std::size_t(partner)] < 0) continue;
+    const Complex target = std::conj(current[std::size_t(match[std::size_t(partner)])].value);
+    match[std::size_t(i)] = nearest_value(current, cur_lower, target);
+  }
+  return match;
+}
+
+}  // namespace railstab
