@@ -13,12 +13,15 @@ namespace railstab {
 struct SceneOverrides {
   std::optional<double> speed_m_per_s;
   std::optional<double> t_end_s;
+  // Where the reference point is at t = 0 (e.g. inside an arc for steady
+  // curving); the scene's reference_arc_length_m otherwise.
+  std::optional<double> reference_arc_length_m;
 };
 
 struct PreparedScene {
   SceneSpec spec;
   Model model;
-  EquilibriumResult equilibrium;  // at t = 0
+  EquilibriumResult equilibrium;  // at t = 0 (steady rolling / curving at the scene speed)
 };
 
 PreparedScene prepare_scene(const std::string& path, const SceneOverrides& overrides);

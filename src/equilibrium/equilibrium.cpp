@@ -47,6 +47,13 @@ Eigen::VectorXd nominal_state(const Model& model) {
   return x;
 }
 
+Eigen::VectorXd lowered_nominal_state(const Model& model) {
+  Eigen::VectorXd guess = nominal_state(model);
+  for (int k = 0; k < model.n_coordinates; ++k)
+    if (model.coordinate_of_state[k].second == int(CoordinateIndex::z)) guess(k) -= 1e-4;
+  return guess;
+}
+
 EquilibriumResult solve_equilibrium(const Model& model, const Eigen::VectorXd& guess,
                                     const EquilibriumOptions& options) {
   const int n = model.n_coordinates;
@@ -113,14 +120,9 @@ EquilibriumResult solve_equilibrium(const Model& model, const Eigen::VectorXd& g
 
 EquilibriumResult balance_gravity_at_nominal(Model& model, double time_s) {
   for (ModelElement& e : model.elements) e.preload.setZero();
-  // Start slightly lowered so every wheel is in contact (Hertz stiffness is
-  // zero at zero penetration).
-  Eigen::VectorXd guess = nominal_state(model);
-  for (int k = 0; k < model.n_coordinates; ++k)
-    if (model.coordinate_of_state[k].second == int(CoordinateIndex::z)) guess(k) -= 1e-4;
   EquilibriumOptions opt;
   opt.time_s = time_s;
-  const EquilibriumResult sagged = solve_equilibrium(model, guess, opt);
+  const EquilibriumResult sagged = solve_equilibrium(model, lowered_nominal_state(model), opt);
 
   // Elastic forces at the sagged equilibrium become preloads.
   const auto frames = track_frames_at(model, time_s);
@@ -138,10 +140,7 @@ EquilibriumResult balance_gravity_at_nominal(Model& model, double time_s) {
       e.preload = e.stiffness.cwiseProduct(rotation_vector<double>(R_12));
     }
   }
-  guess = nominal_state(model);
-  for (int k = 0; k < model.n_coordinates; ++k)
-    if (model.coordinate_of_state[k].second == int(CoordinateIndex::z)) guess(k) -= 1e-4;
-  return solve_equilibrium(model, guess, opt);
+  return solve_equilibrium(model, lowered_nominal_state(model), opt);
 }
 
 }  // namespace railstab

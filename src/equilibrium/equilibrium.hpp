@@ -36,6 +36,9 @@ EquilibriumResult solve_equilibrium(const Model& model, const Eigen::VectorXd& g
 // Nominal state: every body at its nominal position, no offsets, wheelsets
 // spinning at V/r0, everything else at rest relative to its track frame.
 Eigen::VectorXd nominal_state(const Model& model);
+// The nominal state lowered by 0.1 mm so every wheel starts in contact (the
+// Hertz stiffness is zero at zero penetration): the Newton start.
+Eigen::VectorXd lowered_nominal_state(const Model& model);
 
 // ERRATA 13: set each element's preload so that the nominal configuration is
 // the static equilibrium under gravity (elastic forces of the sagged

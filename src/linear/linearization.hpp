@@ -1,0 +1,36 @@
+#pragma once
+// Exact linearisation about an equilibrium: A = df/dx by forward-mode AD.
+//
+// Like Drake's Linearize, it refuses a point that is not an equilibrium
+// within a tolerance. Coordinates whose Jacobian column is exactly zero
+// (the spin angle of an axisymmetric wheelset, ERRATA 11a, or any other
+// cyclic coordinate) are removed together with their row: each removal drops
+// one exact zero eigenvalue and nothing else. The removal is reported.
+#include "model/model.hpp"
+
+#include <Eigen/Dense>
+
+#include <string>
+#include <vector>
+
+namespace railstab {
+
+struct LinearModel {
+  Eigen::MatrixXd A;                      // reduced state matrix
+  std::vector<int> kept_states;           // indices into the full state
+  std::vector<std::string> state_names;   // of the kept states
+  std::vector<std::string> removed_states;  // cyclic coordinates dropped
+  double equilibrium_residual = 0.0;      // max |acceleration| at the point
+};
+
+struct LinearizationOptions {
+  double time_s = 0.0;
+  double max_equilibrium_residual = 1e-6;  // m/s^2 or rad/s^2
+};
+
+// Throws std::runtime_error naming the worst residual when x is not an
+// equilibrium.
+LinearModel linearize(const Model& model, const Eigen::VectorXd& x,
+                      const LinearizationOptions& options = {});
+
+}  // namespace railstab
