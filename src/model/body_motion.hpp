@@ -102,6 +102,22 @@ void apply_force_at(BodyMotion<T>& m, const Vec3<T>& arm_W, const Vec3<T>& force
   m.moment_W += arm_W.cross(force_W);
 }
 
+// Solves the leading n x n block (n = 1, 2, 3) of M x = b by cofactors, so
+// every operation propagates AD derivatives.
+template <class T> Vec3<T> solve_small_spd(const Mat3<T>& M, const Vec3<T>& b, int n) {
+  Vec3<T> x = Vec3<T>::Zero();
+  if (n == 1) {
+    x(0) = b(0) / M(0, 0);
+  } else if (n == 2) {
+    const T det = M(0, 0) * M(1, 1) - M(0, 1) * M(1, 0);
+    x(0) = (M(1, 1) * b(0) - M(0, 1) * b(1)) / det;
+    x(1) = (M(0, 0) * b(1) - M(1, 0) * b(0)) / det;
+  } else {
+    x = M.inverse() * b;  // fixed-size 3x3: explicit cofactor inverse
+  }
+  return x;
+}
+
 // Accelerations of the six coordinates (entries of frozen coordinates are
 // left at zero: their motion is prescribed).
 template <class T>
@@ -151,15 +167,15 @@ Eigen::Matrix<T, 6, 1> body_accelerations(const ModelBody& body, const BodyMotio
   // G columns for roll, pitch, yaw.
   Mat3<T> G;
   G << T(1), T(0), T(0), T(0), T(1), s, T(0), T(0), c;
-  // Fixed maximum sizes: no heap allocation in the right-hand side.
-  using MatG = Eigen::Matrix<T, 3, Eigen::Dynamic, 0, 3, 3>;
-  using MatM = Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic, 0, 3, 3>;
-  using VecM = Eigen::Matrix<T, Eigen::Dynamic, 1, 0, 3, 1>;
-  MatG G_free(3, n_free_rot);
+  // Generalised mass G_f^T J G_f (1x1 .. 3x3) inverted by cofactors. Not an
+  // LU solve: Eigen's triangular solver skips dividing an entry whose *value*
+  // is zero, which for AutoDiffScalar drops the derivatives' division (the
+  // AD Jacobian at an exact equilibrium came out Jz times too large).
+  Mat3<T> G_free = Mat3<T>::Zero();
   for (int j = 0; j < n_free_rot; ++j) G_free.col(j) = G.col(free_rot[j] - 3);
-  const MatM mass = G_free.transpose() * J_I * G_free;
-  const VecM gen_force = G_free.transpose() * rhs_I;
-  const VecM qdd = mass.partialPivLu().solve(gen_force);
+  const Mat3<T> mass = G_free.transpose() * J_I * G_free;  // zero outside n x n
+  const Vec3<T> gen_force = G_free.transpose() * rhs_I;
+  const Vec3<T> qdd = solve_small_spd(mass, gen_force, n_free_rot);
   for (int j = 0; j < n_free_rot; ++j) acc(free_rot[j]) = qdd(j);
   return acc;
 }

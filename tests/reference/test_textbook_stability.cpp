@@ -2,8 +2,29 @@
 // the closed-form textbook models of reference/textbook_models.hpp on the two
 // textbook scenes: same eigenvalues at several speeds, same critical speed
 // and hunting frequency.
+//
+// Every check runs at two linearisation points:
+//  - ExactEquilibrium: rhs_jacobian_ad(model, 0, equilibrium.state), the
+//    product path of a stability analysis;
+//  - TinyOffset: the equilibrium with every free coordinate moved by ~1e-8
+//    (m or rad). All free states are odd under the lateral mirror, so the
+//    right-hand side is odd and its Jacobian even: the offset changes the
+//    linearisation by O(1e-16) only, but no generalised force is exactly zero
+//    in value. (A smaller offset would be lost to rounding against the
+//    absolute positions, ~100 m, and the wheel radii.)
+//    Eigen's triangular solver (TriangularSolverVector.h) skips
+//    `rhs[i] /= diag` when the value of rhs[i] compares equal to zero, and for
+//    AutoDiffScalar only the value is compared: so the derivatives of a
+//    rotational acceleration whose generalised force vanishes exactly (yaw at
+//    the symmetric equilibrium) are not divided by the inertia in
+//    body_accelerations' `mass.partialPivLu().solve(gen_force)` (the yaw rows
+//    of the AD Jacobian come out Jz times too large). The ExactEquilibrium
+//    variants fail on that until the solve is fixed (e.g. an explicit
+//    1x1/2x2/3x3 inverse); the TinyOffset variants show that it is the only
+//    difference from the closed form.
 #include "cli/scene_setup.hpp"
 #include "linear/jacobian.hpp"
+#include "model/equations_of_motion.hpp"
 #include "reference/textbook_models.hpp"
 
 #include <gtest/gtest.h>
@@ -13,6 +34,7 @@
 
 #include <cstdio>
 #include <iostream>
+#include <numbers>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -48,11 +70,28 @@ struct RailstabLinearisation {
   std::vector<std::string> state_names;  // in the closed-form order
 };
 
+enum class Point { exact_equilibrium, tiny_offset };
+
+std::string point_name(const ::testing::TestParamInfo<Point>& info) {
+  return info.param == Point::exact_equilibrium ? "ExactEquilibrium" : "TinyOffset";
+}
+
 RailstabLinearisation railstab_state_matrix(const std::string& path, double V,
-                                            const Coordinates& coords) {
-  const PreparedScene s = prepare_scene(path, {V, std::nullopt});
+                                            const Coordinates& coords, Point point) {
+  SceneOverrides overrides;
+  overrides.speed_m_per_s = V;
+  const PreparedScene s = prepare_scene(path, overrides);
   const Model& model = s.model;
   const int n = model.n_coordinates;
+  Eigen::VectorXd x = s.equilibrium.state;
+  if (point == Point::tiny_offset) {
+    for (int k = 0; k < n; ++k) x(k) += 1e-8 * (1.0 + 0.37 * k);
+    // No acceleration may vanish exactly (that is what the offset is for).
+    const Eigen::VectorXd xdot = rhs(model, 0.0, x);
+    for (int k = 0; k < n; ++k)
+      if (xdot(n + k) == 0.0)
+        throw std::runtime_error("tiny offset: zero acceleration of " + model.state_name(n + k));
+  }
   std::vector<int> q_index;
   for (const auto& [body, c] : coords) {
     int found = -1;
@@ -65,7 +104,7 @@ RailstabLinearisation railstab_state_matrix(const std::string& path, double V,
   }
   std::vector<int> index = q_index;
   for (int k : q_index) index.push_back(n + k);
-  const Eigen::MatrixXd full = rhs_jacobian_ad(model, 0.0, s.equilibrium.state);
+  const Eigen::MatrixXd full = rhs_jacobian_ad(model, 0.0, x);
   RailstabLinearisation out;
   out.A = full(index, index);
   out.dropped_states = 2 * n - int(index.size());
@@ -118,7 +157,11 @@ constexpr int kScanSteps = 299;             // 1 m/s scan before bisection
 
 void print_onset(const std::string& what, double V, double w) {
   std::printf("[textbook] %-44s V_crit = %.10f m/s (%.4f km/h), omega = %.10f rad/s, f = %.8f Hz\n",
-              what.c_str(), V, V * 3.6, w, w / (2.0 * M_PI));
+              what.c_str(), V, V * 3.6, w, w / (2.0 * std::numbers::pi));
+}
+
+const char* point_label(Point p) {
+  return p == Point::exact_equilibrium ? "exact equilibrium" : "equilibrium + 1e-8";
 }
 
 struct Onset {
@@ -127,18 +170,29 @@ struct Onset {
 
 // Critical speed of railstab's linearisation: bisection on the largest real
 // part of the AD state matrix's eigenvalues (round-off zeros excluded).
-std::optional<Onset> railstab_onset(const std::string& path, const Coordinates& coords) {
+std::optional<Onset> railstab_onset(const std::string& path, const Coordinates& coords,
+                                    Point point) {
   auto max_re = [&](double V) {
-    return tb::dominant_eigenvalue(railstab_state_matrix(path, V, coords).A).real();
+    return tb::dominant_eigenvalue(railstab_state_matrix(path, V, coords, point).A).real();
   };
   const std::optional<double> V =
       tb::first_unstable_speed(max_re, kSpeedLow, kSpeedHigh, kSpeedTolerance, kScanSteps);
   if (!V) return std::nullopt;
-  const double w = std::abs(tb::dominant_eigenvalue(railstab_state_matrix(path, *V, coords).A).imag());
+  const double w =
+      std::abs(tb::dominant_eigenvalue(railstab_state_matrix(path, *V, coords, point).A).imag());
   return Onset{*V, w};
 }
 
 }  // namespace
+
+class TextbookWheelsetOracle : public ::testing::TestWithParam<Point> {};
+class TextbookBogieOracle : public ::testing::TestWithParam<Point> {};
+INSTANTIATE_TEST_SUITE_P(Textbook, TextbookWheelsetOracle,
+                         ::testing::Values(Point::exact_equilibrium, Point::tiny_offset),
+                         point_name);
+INSTANTIATE_TEST_SUITE_P(Textbook, TextbookBogieOracle,
+                         ::testing::Values(Point::exact_equilibrium, Point::tiny_offset),
+                         point_name);
 
 // --- Wheelset on springs to the track ---------------------------------------------
 
@@ -151,17 +205,20 @@ TEST(TextbookWheelset, SceneFitsTheTextbookModel) {
   EXPECT_NEAR(s.equilibrium.state.cwiseAbs().maxCoeff(), 0.0, 1e-12);
 }
 
-TEST(TextbookWheelset, EigenvaluesEqualClosedFormAtSeveralSpeeds) {
+TEST_P(TextbookWheelsetOracle, EigenvaluesEqualClosedFormAtSeveralSpeeds) {
   const std::string path = case_path("textbook_wheelset");
   const tb::RestrainedWheelset p =
       tb::restrained_wheelset_from_scene(prepare_scene(path, {}).spec);
+  double worst = 0.0;
   for (double V : {5.0, 20.0, 30.0, 60.0, 73.0, 100.0, 150.0, 250.0}) {
-    const RailstabLinearisation r = railstab_state_matrix(path, V, wheelset_coordinates(p));
+    const RailstabLinearisation r =
+        railstab_state_matrix(path, V, wheelset_coordinates(p), GetParam());
     EXPECT_EQ(r.dropped_states, 0);
     const Eigen::MatrixXd A = tb::restrained_wheelset_state_matrix(p, V);
     std::string listing;
-    EXPECT_LT(max_relative_eigenvalue_gap(r.A, A, &listing), kEigenTolerance)
-        << "V = " << V << "\n" << listing;
+    const double gap = max_relative_eigenvalue_gap(r.A, A, &listing);
+    worst = std::max(worst, gap);
+    EXPECT_LT(gap, kEigenTolerance) << "V = " << V << "\n" << listing;
     expect_same_matrix(r, A, kEigenTolerance, V);
     // The closed-form polynomial has the same roots as the closed-form A.
     const std::array<double, 5> a = tb::restrained_wheelset_characteristic_polynomial(p, V);
@@ -171,12 +228,14 @@ TEST(TextbookWheelset, EigenvaluesEqualClosedFormAtSeveralSpeeds) {
       const std::complex<double> P = (((a[0] * s + a[1]) * s + a[2]) * s + a[3]) * s + a[4];
       const double scale = std::abs(a[0] * std::pow(s, 4)) + std::abs(a[1] * std::pow(s, 3)) +
                            std::abs(a[2] * s * s) + std::abs(a[3] * s) + std::abs(a[4]);
-      EXPECT_LT(std::abs(P), 1e-12 * scale) << "V = " << V << " root " << s;
+      EXPECT_LT(std::abs(P), 1e-10 * scale) << "V = " << V << " root " << s;
     }
   }
+  std::printf("[textbook] wheelset, %s: largest relative eigenvalue gap %.3g\n",
+              point_label(GetParam()), worst);
 }
 
-TEST(TextbookWheelset, CriticalSpeedAndFrequencyEqualClosedForm) {
+TEST_P(TextbookWheelsetOracle, CriticalSpeedAndFrequencyEqualClosedForm) {
   const std::string path = case_path("textbook_wheelset");
   const tb::RestrainedWheelset p =
       tb::restrained_wheelset_from_scene(prepare_scene(path, {}).spec);
@@ -199,14 +258,14 @@ TEST(TextbookWheelset, CriticalSpeedAndFrequencyEqualClosedForm) {
   EXPECT_NEAR(w_matrix, closed->angular_frequency_rad_per_s,
               kOnsetTolerance * closed->angular_frequency_rad_per_s);
 
-  const std::optional<Onset> rs = railstab_onset(path, wheelset_coordinates(p));
+  const std::optional<Onset> rs = railstab_onset(path, wheelset_coordinates(p), GetParam());
   ASSERT_TRUE(rs.has_value()) << "railstab: no crossing below " << kSpeedHigh << " m/s";
-  print_onset("wheelset, railstab AD Jacobian, bisection", rs->V, rs->omega);
+  print_onset(std::string("wheelset, railstab AD, ") + point_label(GetParam()), rs->V, rs->omega);
   EXPECT_NEAR(rs->V, closed->speed_m_per_s, kOnsetTolerance * closed->speed_m_per_s);
   EXPECT_NEAR(rs->omega, closed->angular_frequency_rad_per_s,
               kOnsetTolerance * closed->angular_frequency_rad_per_s);
   RecordProperty("V_crit_m_per_s", std::to_string(rs->V));
-  RecordProperty("f_crit_Hz", std::to_string(rs->omega / (2.0 * M_PI)));
+  RecordProperty("f_crit_Hz", std::to_string(rs->omega / (2.0 * std::numbers::pi)));
 }
 
 // --- Bogie: two wheelsets and a frame on primary springs ------------------------
@@ -224,21 +283,26 @@ TEST(TextbookBogie, SceneFitsTheTextbookModel) {
   EXPECT_NEAR(s.equilibrium.state.cwiseAbs().maxCoeff(), 0.0, 1e-12);
 }
 
-TEST(TextbookBogie, EigenvaluesEqualClosedFormAtSeveralSpeeds) {
+TEST_P(TextbookBogieOracle, EigenvaluesEqualClosedFormAtSeveralSpeeds) {
   const std::string path = case_path("textbook_bogie");
   const tb::Bogie p = tb::bogie_from_scene(prepare_scene(path, {}).spec);
+  double worst = 0.0;
   for (double V : {5.0, 20.0, 30.0, 60.0, 100.0, 150.0, 250.0}) {
-    const RailstabLinearisation r = railstab_state_matrix(path, V, bogie_coordinates(p));
+    const RailstabLinearisation r =
+        railstab_state_matrix(path, V, bogie_coordinates(p), GetParam());
     EXPECT_EQ(r.dropped_states, 0);
     const Eigen::MatrixXd A = tb::bogie_state_matrix(p, V);
     std::string listing;
-    EXPECT_LT(max_relative_eigenvalue_gap(r.A, A, &listing), kEigenTolerance)
-        << "V = " << V << "\n" << listing;
+    const double gap = max_relative_eigenvalue_gap(r.A, A, &listing);
+    worst = std::max(worst, gap);
+    EXPECT_LT(gap, kEigenTolerance) << "V = " << V << "\n" << listing;
     expect_same_matrix(r, A, kEigenTolerance, V);
   }
+  std::printf("[textbook] bogie, %s: largest relative eigenvalue gap %.3g\n",
+              point_label(GetParam()), worst);
 }
 
-TEST(TextbookBogie, CriticalSpeedAndFrequencyEqualClosedForm) {
+TEST_P(TextbookBogieOracle, CriticalSpeedAndFrequencyEqualClosedForm) {
   const std::string path = case_path("textbook_bogie");
   const tb::Bogie p = tb::bogie_from_scene(prepare_scene(path, {}).spec);
 
@@ -270,11 +334,11 @@ TEST(TextbookBogie, CriticalSpeedAndFrequencyEqualClosedForm) {
     EXPECT_LT(rel_det, 1e-8);
   }
 
-  const std::optional<Onset> rs = railstab_onset(path, bogie_coordinates(p));
+  const std::optional<Onset> rs = railstab_onset(path, bogie_coordinates(p), GetParam());
   ASSERT_TRUE(rs.has_value()) << "railstab: no crossing below " << kSpeedHigh << " m/s";
-  print_onset("bogie, railstab AD Jacobian, bisection", rs->V, rs->omega);
+  print_onset(std::string("bogie, railstab AD, ") + point_label(GetParam()), rs->V, rs->omega);
   EXPECT_NEAR(rs->V, *V_closed, kOnsetTolerance * *V_closed);
   EXPECT_NEAR(rs->omega, w_closed, kOnsetTolerance * w_closed);
   RecordProperty("V_crit_m_per_s", std::to_string(rs->V));
-  RecordProperty("f_crit_Hz", std::to_string(rs->omega / (2.0 * M_PI)));
+  RecordProperty("f_crit_Hz", std::to_string(rs->omega / (2.0 * std::numbers::pi)));
 }
