@@ -1,6 +1,7 @@
 // railstab: lateral stability of railway vehicles. Subcommands live in
 // src/cli/*_command.cpp; this file only wires them and reports errors.
 #include "cli/simulate_command.hpp"
+#include "cli/stability_commands.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -11,6 +12,7 @@ int main(int argc, char** argv) {
                "nonlinear time domain)"};
   app.require_subcommand(1);
   railstab::register_simulate_command(app);
+  railstab::register_stability_commands(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

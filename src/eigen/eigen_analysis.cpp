@@ -37,8 +37,10 @@ double relative_residual(const Eigen::MatrixXd& A, double norm_A, Complex lambda
                          const Eigen::VectorXcd& v) {
   const double scale = norm_A * v.norm();
   if (scale == 0.0) return 0.0;
-  const Eigen::VectorXcd r = A.cast<Complex>() * v - lambda * v;
-  return r.norm() / scale;
+  // A v for real A without forming a complex copy of A.
+  const Eigen::VectorXd Av_re = A * v.real(), Av_im = A * v.imag();
+  const Eigen::VectorXcd Av = Av_re.cast<Complex>() + Complex(0.0, 1.0) * Av_im.cast<Complex>();
+  return (Av - lambda * v).norm() / scale;
 }
 
 EigenPair make_eigenpair(const Eigen::MatrixXd& A, double norm_A, Complex lambda,
@@ -69,11 +71,49 @@ void require_square_and_finite(const Eigen::MatrixXd& A, const char* who) {
 // Shift-invert operator
 // ---------------------------------------------------------------------------
 
-// OP x = Re((A - sigma I)^-1 x), the operator of ARPACK's dnaupd mode 3. For
-// a real shift this is the plain inverse; for a complex shift it is
-// (1/2)[(A - sigma I)^-1 + (A - conj(sigma) I)^-1], a real operator whose
-// eigenvectors are those of A and whose large eigenvalues come from the
-// eigenvalues of A near sigma and conj(sigma).
+// Which part of (A - sigma I)^-1 ARPACK iterates with, as dnaupd's mode
+// number. For a real shift both modes are the plain inverse. For a complex
+// shift sigma = a + ib both are real operators with the eigenvectors of A:
+//  - real part (mode 3): (1/2)[(A - sigma I)^-1 + (A - conj(sigma) I)^-1],
+//    eigenvalue (lambda - a) / ((lambda - sigma)(lambda - conj(sigma)));
+//  - imaginary part (mode 4): b (A - sigma I)^-1 (A - conj(sigma) I)^-1,
+//    eigenvalue b / ((lambda - sigma)(lambda - conj(sigma))).
+// The real part vanishes at lambda = a: it is blind to eigenvalues of A near
+// Re(sigma) on the real axis, the imaginary part has no such spot.
+enum class OperatorPart { real = 3, imaginary = 4 };
+
+// Magnitude of the eigenvalue of OP that an eigenvalue lambda of A becomes:
+// ARPACK finds the largest ones, so this is the order it sees A's spectrum in.
+double op_magnitude(Complex lambda, Complex sigma, OperatorPart part) {
+  const double denominator = std::abs(lambda - sigma) * std::abs(lambda - std::conj(sigma));
+  const double numerator =
+      part == OperatorPart::real ? std::abs(lambda - sigma.real()) : std::abs(sigma.imag());
+  return numerator / denominator;
+}
+
+// The real part's blind spot, Re(sigma) on the real axis, lies in the disc
+// |lambda - sigma| <= radius.
+bool disc_contains_blind_spot(Complex sigma, double radius) {
+  return sigma.imag() != 0.0 && std::abs(sigma.imag()) <= radius;
+}
+
+// Smallest op_magnitude over the closed disc |lambda - sigma| <= radius.
+// Inside the disc OP's eigenvalue function has its pole at sigma and no zero
+// unless the disc reaches a = Re(sigma) (real part only), so by the minimum
+// modulus principle the minimum lies on the circle; 4096 samples find it to
+// well under the 1e-3 slack used by the caller.
+double min_op_magnitude_in_disc(Complex sigma, double radius, OperatorPart part) {
+  if (part == OperatorPart::real && disc_contains_blind_spot(sigma, radius)) return 0.0;
+  constexpr int samples = 4096;
+  double smallest = std::numeric_limits<double>::infinity();
+  for (int j = 0; j < samples; ++j) {
+    const Complex lambda = sigma + std::polar(radius, 2.0 * std::numbers::pi * j / samples);
+    smallest = std::min(smallest, op_magnitude(lambda, sigma, part));
+  }
+  return smallest;
+}
+
+// OP x = Re or Im of (A - sigma I)^-1 x, the operator of dnaupd modes 3 / 4.
 // This class is the only place that knows how (A - sigma I) is factorised:
 // a sparse LU (e.g. Eigen::SparseLU<SparseMatrix<complex>>) can replace the
 // dense one without touching the Arnoldi driver.
@@ -83,7 +123,7 @@ class ShiftInvertOperator {
       : lu_(shifted(A, sigma)), rhs_(A.rows()) {
     // A (near-)singular A - sigma I means sigma sits on an eigenvalue: the
     // operator is meaningless and the solves would return garbage silently.
-    if (!(lu_.rcond() > 64 * std::numeric_limits<double>::epsilon()))
+    if (numerically_singular())
       throw std::invalid_argument(
           "eigen_arpack_shift_invert: A - shift*I is numerically singular (the shift is an "
           "eigenvalue of A); move the shift slightly");
@@ -91,12 +131,26 @@ class ShiftInvertOperator {
 
   int size() const { return int(rhs_.size()); }
 
-  void apply(const double* x, double* y) {
+  void apply(OperatorPart part, const double* x, double* y) {
     rhs_ = Eigen::Map<const Eigen::VectorXd>(x, size()).cast<Complex>();
-    Eigen::Map<Eigen::VectorXd>(y, size()) = lu_.solve(rhs_).real();
+    const Eigen::VectorXcd solution = lu_.solve(rhs_);
+    Eigen::Map<Eigen::VectorXd> out(y, size());
+    if (part == OperatorPart::real)
+      out = solution.real();
+    else
+      out = solution.imag();
   }
 
  private:
+  // Both tests: Eigen's rcond() estimate misses an exactly zero pivot (it
+  // reports a healthy value), and a tiny pivot ratio alone misses some
+  // ill-conditioned but well-pivoted factors.
+  bool numerically_singular() const {
+    const double tiny = 64 * std::numeric_limits<double>::epsilon();
+    const Eigen::VectorXd pivots = lu_.matrixLU().diagonal().cwiseAbs();
+    return !(pivots.minCoeff() > tiny * pivots.maxCoeff()) || !(lu_.rcond() > tiny);
+  }
+
   static Eigen::MatrixXcd shifted(const Eigen::MatrixXd& A, Complex sigma) {
     Eigen::MatrixXcd S = A.cast<Complex>();
     S.diagonal().array() -= sigma;
@@ -183,18 +237,20 @@ struct ArnoldiSizes {
   int ncv;  // Arnoldi basis size
 };
 
-// How many eigenvalues of OP to ask for so that the wanted number of
-// eigenvalues of A nearest sigma is among them:
-//  - complex shift: every eigenvalue of A near sigma comes with its conjugate
-//    (near conj(sigma)) as a conjugate pair of OP, so twice as many;
-//  - the magnitude order of OP = Re((A - sigma I)^-1) is only approximately
-//    the distance order to sigma, so a few more as margin.
-ArnoldiSizes choose_arnoldi_sizes(int n, int wanted, Complex sigma) {
+// How many eigenvalues of OP to ask for first. With a complex shift every
+// eigenvalue of A near sigma comes with its conjugate (near conj(sigma)) as a
+// conjugate pair of OP, so twice as many; plus a margin because OP's
+// magnitude order is only roughly the distance order to sigma. Too few is
+// detected afterwards (see nearest_are_certain) and the request grown.
+int initial_ritz_count(int n, int wanted, Complex sigma) {
   const bool complex_shift = sigma.imag() != 0.0;
   const int margin = 4 + wanted / 2;
-  const int nev = std::min(n - 2, (complex_shift ? 2 * wanted : wanted) + margin);
-  const int ncv = std::min(n, std::max(2 * nev + 1, 20));
-  return {nev, ncv};
+  return std::min(n - 2, (complex_shift ? 2 * wanted : wanted) + margin);
+}
+
+// ARPACK wants NEV + 2 <= NCV <= N; about twice NEV converges fast.
+ArnoldiSizes arnoldi_sizes(int n, int nev) {
+  return {nev, std::min(n, std::max(2 * nev + 1, 20))};
 }
 
 // The arrays dnaupd and dneupd share; they must not change between the calls.
@@ -229,11 +285,12 @@ void set_reproducible_start_vector(std::vector<double>& resid) {
 constexpr arpack::which kLargestMagnitude = arpack::which::largest_magnitude;
 
 // Implicitly restarted Arnoldi on OP until the wanted Ritz values converge.
-void run_arnoldi(ShiftInvertOperator& op, ArnoldiWorkspace& ws, const ArpackOptions& opt) {
+void run_arnoldi(ShiftInvertOperator& op, OperatorPart part, ArnoldiWorkspace& ws,
+                 const ArpackOptions& opt) {
   set_reproducible_start_vector(ws.resid);
   ws.iparam[0] = 1;                   // exact shifts
   ws.iparam[2] = opt.max_iterations;  // restart limit
-  ws.iparam[6] = 3;                   // shift-invert, OP = Re((A - sigma I)^-1)
+  ws.iparam[6] = int(part);           // shift-invert mode 3 or 4
   a_int ido = 0;
   a_int info = 1;  // 1: use the start vector in resid
   while (true) {
@@ -245,7 +302,7 @@ void run_arnoldi(ShiftInvertOperator& op, ArnoldiWorkspace& ws, const ArpackOpti
     const double* x = ws.workd.data() + ws.ipntr[0] - 1;
     double* y = ws.workd.data() + ws.ipntr[1] - 1;
     if (ido == -1 || ido == 1) {
-      op.apply(x, y);
+      op.apply(part, x, y);
     } else if (ido == 2) {
       std::copy(x, x + ws.n, y);  // B = I
     } else {
@@ -335,6 +392,38 @@ std::vector<EigenPair> nearest_to_shift(std::vector<EigenPair> pairs, Complex si
 std::mutex& arpack_mutex() {
   static std::mutex m;
   return m;
+}
+
+// One ARPACK run asking for nev Ritz values of OP; returns the eigenpairs of A
+// in the converged invariant subspace.
+std::vector<EigenPair> shift_invert_eigenpairs(const Eigen::MatrixXd& A, double norm_A,
+                                               ShiftInvertOperator& op, OperatorPart part,
+                                               int nev, const ArpackOptions& opt) {
+  ArnoldiWorkspace workspace(op.size(), arnoldi_sizes(op.size(), nev));
+  Eigen::MatrixXd schur_basis;
+  {
+    std::lock_guard<std::mutex> lock(arpack_mutex());
+    run_arnoldi(op, part, workspace, opt);
+    schur_basis = converged_schur_basis(workspace, opt);
+  }
+  return rayleigh_ritz_pairs(A, norm_A, schur_basis);
+}
+
+// Proof that no unseen eigenvalue is nearer sigma than the farthest one kept.
+// ARPACK returns the eigenvalues of A whose OP eigenvalues are largest, so an
+// unseen one has op_magnitude at most that of the weakest one seen; if every
+// point of the disc reaching the farthest kept eigenvalue has a larger
+// op_magnitude, no unseen eigenvalue lies in it. Needed because with a
+// complex shift the magnitude order and the distance order differ a lot once
+// the disc is not small against Im(sigma), and no fixed margin covers that.
+bool nearest_are_certain(const std::vector<EigenPair>& converged,
+                         const std::vector<EigenPair>& nearest, Complex sigma,
+                         OperatorPart part) {
+  double weakest_seen = std::numeric_limits<double>::infinity();
+  for (const EigenPair& p : converged)
+    weakest_seen = std::min(weakest_seen, op_magnitude(p.value, sigma, part));
+  const double radius = std::abs(nearest.back().value - sigma);
+  return min_op_magnitude_in_disc(sigma, radius, part) * (1.0 - 1e-3) > weakest_seen;
 }
 
 // ---------------------------------------------------------------------------
@@ -466,19 +555,36 @@ std::vector<EigenPair> eigen_arpack_shift_invert(const Eigen::MatrixXd& A,
   validate_arpack_request(A, opt);
   const int n = int(A.rows());
   ShiftInvertOperator op(A, opt.shift);
-  ArnoldiWorkspace workspace(n, choose_arnoldi_sizes(n, opt.n_eigenvalues, opt.shift));
-  Eigen::MatrixXd schur_basis;
-  {
-    std::lock_guard<std::mutex> lock(arpack_mutex());
-    run_arnoldi(op, workspace, opt);
-    schur_basis = converged_schur_basis(workspace, opt);
+  const double norm_A = A.norm();
+  // dnaupd mode 3 first; mode 4 only where mode 3 cannot answer (below).
+  OperatorPart part = OperatorPart::real;
+  int nev = initial_ritz_count(n, opt.n_eigenvalues, opt.shift);
+  while (true) {
+    const std::vector<EigenPair> converged =
+        shift_invert_eigenpairs(A, norm_A, op, part, nev, opt);
+    std::vector<EigenPair> nearest = nearest_to_shift(converged, opt.shift, opt.n_eigenvalues);
+    const bool enough = int(nearest.size()) >= opt.n_eigenvalues;
+    if (enough && nearest_are_certain(converged, nearest, opt.shift, part)) return nearest;
+    // The real part hides eigenvalues near Re(sigma) on the real axis: once
+    // the wanted disc reaches that point no Ritz count can prove the answer,
+    // but the imaginary part can.
+    if (enough && part == OperatorPart::real &&
+        disc_contains_blind_spot(opt.shift, std::abs(nearest.back().value - opt.shift))) {
+      part = OperatorPart::imaginary;
+      continue;
+    }
+    if (nev < n - 2) {
+      nev = std::min(n - 2, 2 * nev);
+      continue;
+    }
+    if (!enough)
+      throw std::runtime_error("eigen_arpack_shift_invert: ARPACK converged only " +
+                               std::to_string(nearest.size()) + " eigenvalues, " +
+                               std::to_string(opt.n_eigenvalues) + " requested");
+    // n - 2 Ritz values and still unproven: only the two eigenvalues OP
+    // weights least are unseen. Best available answer.
+    return nearest;
   }
-  std::vector<EigenPair> pairs = rayleigh_ritz_pairs(A, A.norm(), schur_basis);
-  if (int(pairs.size()) < opt.n_eigenvalues)
-    throw std::runtime_error("eigen_arpack_shift_invert: ARPACK converged only " +
-                             std::to_string(pairs.size()) + " eigenvalues, " +
-                             std::to_string(opt.n_eigenvalues) + " requested");
-  return nearest_to_shift(std::move(pairs), opt.shift, opt.n_eigenvalues);
 }
 
 ModeInfo mode_info(Complex lambda) {

@@ -37,6 +37,15 @@ struct ArpackOptions {
 // The opt.n_eigenvalues eigenpairs of A nearest opt.shift, sorted by distance
 // to the shift. A conjugate pair equidistant from the shift (real shift) is
 // never split: the partner is appended, so one more pair may be returned.
+// Method: (A - shift I) is factorised once (complex LU); ARPACK dnaupd/dneupd
+// iterate with OP = Re((A - shift I)^-1) (mode 3), and the eigenpairs of A
+// are recovered by Rayleigh-Ritz on the converged invariant subspace (the
+// Ritz values ARPACK returns for a complex shift are OP's, not A's). ARPACK
+// finds OP's largest eigenvalues, which with a complex shift are only
+// roughly A's nearest ones, so the result is checked against a bound and the
+// Ritz count grown until no unseen eigenvalue can be nearer. Where mode 3
+// cannot tell (the wanted disc reaches Re(shift) on the real axis, where
+// OP's eigenvalue is 0), it switches to OP = Im((A - shift I)^-1) (mode 4).
 // Throws std::invalid_argument for bad input (non-square or non-finite A,
 // n_eigenvalues outside [1, n - 2], non-positive iterations, negative
 // tolerance, shift on an eigenvalue) and std::runtime_error with ARPACK's

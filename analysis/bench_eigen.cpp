@@ -1,0 +1,105 @@
+// Timing of the two eigen solvers on synthetic damped mechanical systems in
+// first-order form, A = [[0, I], [-M^-1 K, -M^-1 C]], of 100 and 200 states:
+// all eigenpairs by eigen_dense against the 12 nearest sigma = 0.5 + 5i by
+// eigen_arpack_shift_invert. Prints the time per call and dense / ARPACK.
+#include "eigen/eigen_analysis.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <functional>
+#include <random>
+#include <vector>
+
+namespace {
+
+using railstab::ArpackOptions;
+using railstab::EigenPair;
+using Complex = std::complex<double>;
+
+Eigen::MatrixXd random_orthogonal(Eigen::Index n, std::mt19937& rng) {
+  std::normal_distribution<double> normal;
+  const Eigen::MatrixXd G = Eigen::MatrixXd::NullaryExpr(n, n, [&] { return normal(rng); });
+  return Eigen::HouseholderQR<Eigen::MatrixXd>(G).householderQ();
+}
+
+Eigen::MatrixXd random_spd(Eigen::Index n, double lo, double hi, std::mt19937& rng) {
+  std::uniform_real_distribution<double> uniform(lo, hi);
+  const Eigen::MatrixXd Q = random_orthogonal(n, rng);
+  const Eigen::VectorXd d = Eigen::VectorXd::NullaryExpr(n, [&] { return uniform(rng); });
+  return Q * d.asDiagonal() * Q.transpose();
+}
+
+// Natural frequencies spread over roughly 0.2..20 rad/s, light damping: the
+// shape of a vehicle's lateral spectrum, with the shift inside it.
+Eigen::MatrixXd damped_mechanical_system(Eigen::Index states, unsigned seed) {
+  std::mt19937 rng(seed);
+  const Eigen::Index dofs = states / 2;
+  const Eigen::MatrixXd M = random_spd(dofs, 1.0, 5.0, rng);
+  const Eigen::MatrixXd K = random_spd(dofs, 0.25, 400.0, rng);
+  const Eigen::MatrixXd C = 0.01 * K + random_spd(dofs, 0.0, 0.1, rng);
+  const Eigen::PartialPivLU<Eigen::MatrixXd> mass(M);
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(states, states);
+  A.topRightCorner(dofs, dofs).setIdentity();
+  A.bottomLeftCorner(dofs, dofs) = -mass.solve(K);
+  A.bottomRightCorner(dofs, dofs) = -mass.solve(C);
+  return A;
+}
+
+// Seconds per call: calls repeated until a batch lasts at least 0.2 s, five
+// batches, median of the batch means (robust to a stray slow batch).
+double seconds_per_call(const std::function<void()>& call) {
+  using Clock = std::chrono::steady_clock;
+  call();  // warm-up: first-touch allocations, caches
+  std::vector<double> batch_means;
+  for (int batch = 0; batch < 5; ++batch) {
+    int calls = 0;
+    const Clock::time_point start = Clock::now();
+    double elapsed = 0.0;
+    do {
+      call();
+      ++calls;
+      elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+    } while (elapsed < 0.2);
+    batch_means.push_back(elapsed / calls);
+  }
+  std::sort(batch_means.begin(), batch_means.end());
+  return batch_means[batch_means.size() / 2];
+}
+
+// Largest relative difference between ARPACK's eigenvalues and the nearest
+// dense ones: the timing means nothing if the answers differ.
+double largest_relative_difference(const std::vector<EigenPair>& arpack,
+                                   const std::vector<EigenPair>& dense) {
+  double worst = 0.0;
+  for (const EigenPair& a : arpack) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const EigenPair& d : dense) nearest = std::min(nearest, std::abs(a.value - d.value));
+    worst = std::max(worst, nearest / std::abs(a.value));
+  }
+  return worst;
+}
+
+void bench_system(Eigen::Index states) {
+  const Eigen::MatrixXd A = damped_mechanical_system(states, 11);
+  ArpackOptions opt;
+  opt.shift = Complex(0.5, 5.0);
+  opt.n_eigenvalues = 12;
+
+  const double dense_s = seconds_per_call([&] { (void)railstab::eigen_dense(A); });
+  const double arpack_s =
+      seconds_per_call([&] { (void)railstab::eigen_arpack_shift_invert(A, opt); });
+  const double difference = largest_relative_difference(
+      railstab::eigen_arpack_shift_invert(A, opt), railstab::eigen_dense(A));
+  std::printf("%4ld states: dense %9.3f ms   ARPACK (12 near %.1f%+.1fi) %9.3f ms   "
+              "dense/ARPACK %6.2f   max rel. difference %.1e\n",
+              long(states), 1e3 * dense_s, opt.shift.real(), opt.shift.imag(), 1e3 * arpack_s,
+              dense_s / arpack_s, difference);
+}
+
+}  // namespace
+
+int main() {
+  for (Eigen::Index states : {100, 200}) bench_system(states);
+  return 0;
+}

@@ -1,0 +1,227 @@
+#include "cli/stability_commands.hpp"
+
+#include "cli/scene_setup.hpp"
+#include "io/json_writer.hpp"
+#include "io/output_files.hpp"
+#include "model/equations_of_motion.hpp"
+#include "report/stability_report.hpp"
+#include "stability/speed_analysis.hpp"
+
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+
+namespace railstab {
+
+namespace {
+
+struct CommonArgs {
+  std::string scene;
+  SceneOverrides overrides;
+  std::string out_dir = "out";
+  std::string solver = "dense";
+};
+
+void add_common(CLI::App* cmd, CommonArgs& a) {
+  cmd->add_option("scene", a.scene, "scene file (TOML)")->required()->check(CLI::ExistingFile);
+  cmd->add_option("--arc-length", a.overrides.reference_arc_length_m,
+                  "arc length (m) of the scene's reference point, e.g. inside an arc for "
+                  "steady curving");
+  cmd->add_option("--out", a.out_dir, "output directory")->capture_default_str();
+}
+
+void add_solver(CLI::App* cmd, CommonArgs& a) {
+  cmd->add_option("--solver", a.solver, "eigen-solver: dense (all modes) or arpack "
+                                        "(shift-invert near the hunting band)")
+      ->check(CLI::IsMember({"dense", "arpack"}))
+      ->capture_default_str();
+}
+
+StabilityOptions stability_options(const CommonArgs& a) {
+  StabilityOptions o;
+  o.solver = a.solver == "arpack" ? EigenSolverKind::arpack : EigenSolverKind::dense;
+  return o;
+}
+
+std::string prefix_for(const CommonArgs& a, const Model& m) {
+  return (std::filesystem::path(a.out_dir) / m.name).string();
+}
+
+// --- equilibrium ---------------------------------------------------------------
+void run_equilibrium(const CommonArgs& a) {
+  const PreparedScene s = prepare_scene(a.scene, a.overrides);
+  const Model& model = s.model;
+  EvaluationDetails details;
+  rhs(model, 0.0, s.equilibrium.state, &details);
+  Eigen::MatrixXd q6, qd6;
+  model.full_coordinates(0.0, s.equilibrium.state, q6, qd6);
+  const std::string path = prefix_for(a, model) + "_equilibrium.json";
+  std::cout << std::setprecision(6) << "equilibrium of " << model.name << " at "
+            << model.speed_m_per_s << " m/s: " << s.equilibrium.iterations
+            << " Newton iterations, max acceleration residual " << s.equilibrium.max_acceleration
+            << "\n";
+  write_file_atomically(path, [&](std::ostream& out) {
+    JsonWriter j(out);
+    j.begin_object().field("scene", model.name).field("speed_m_s", model.speed_m_per_s);
+    j.field("newton_iterations", s.equilibrium.iterations)
+        .field("max_acceleration_residual", s.equilibrium.max_acceleration);
+    j.key("bodies").begin_array();
+    for (size_t b = 0; b < model.bodies.size(); ++b) {
+      j.begin_object().field("name", model.bodies[b].name);
+      for (int c = 0; c < 6; ++c) {
+        const double offset = q6(c, b) - model.bodies[b].nominal_q(c);
+        if (c == int(CoordinateIndex::pitch) && model.bodies[b].is_wheelset) {
+          j.field("spin_rate_rad_s", qd6(c, b));
+          continue;
+        }
+        j.field(kCoordinateNames[c] + "_offset", offset);
+      }
+      std::cout << "  " << std::left << std::setw(10) << model.bodies[b].name << std::right
+                << " lateral " << std::setw(12) << q6(1, b) * 1e3 << " mm  yaw " << std::setw(12)
+                << q6(5, b) * 1e3 << " mrad  roll " << std::setw(12) << q6(3, b) * 1e3
+                << " mrad  vertical offset " << std::setw(12)
+                << (q6(2, b) - model.bodies[b].nominal_q(2)) * 1e3 << " mm\n";
+      j.key("wheels").begin_array();
+      for (const ContactSnapshot& c : details.contacts) {
+        if (c.body != int(b)) continue;
+        const WheelContact<double>& w = c.wheel;
+        j.begin_object()
+            .field("side", w.side > 0 ? "left" : "right")
+            .field("normal_force_N", w.normal_force_N)
+            .field("penetration_m", w.penetration_m)
+            .field("rolling_radius_m", w.rolling_radius_m)
+            .field("creepage_longitudinal", w.creep_x)
+            .field("creepage_lateral", w.creep_y)
+            .field("creepage_spin_per_m", w.creep_spin_per_m)
+            .field("force_longitudinal_N", w.force_I.x())
+            .field("force_lateral_N", w.force_I.y())
+            .field("force_vertical_N", w.force_I.z())
+            .end_object();
+        std::cout << "      " << (w.side > 0 ? "left " : "right") << " wheel load "
+                  << w.normal_force_N << " N, creepages (" << w.creep_x << ", " << w.creep_y
+                  << ", " << w.creep_spin_per_m << " 1/m)\n";
+      }
+      j.end_array().end_object();
+    }
+    j.end_array().end_object();
+  });
+  std::cout << "wrote " << path << "\n";
+}
+
+// --- eigen ---------------------------------------------------------------------
+void run_eigen(const CommonArgs& a, double max_hz) {
+  const PreparedScene s = prepare_scene(a.scene, a.overrides);
+  SpeedStability stability(s.model, s.equilibrium.state, stability_options(a));
+  const StabilityPoint p = stability.at(s.model.speed_m_per_s);
+  std::cout << s.model.name << " at " << p.speed_m_per_s << " m/s: " << p.linear.A.rows()
+            << " states";
+  if (!p.linear.removed_states.empty()) {
+    std::cout << " (removed cyclic:";
+    for (const std::string& r : p.linear.removed_states) std::cout << ' ' << r;
+    std::cout << ")";
+  }
+  std::cout << ", " << p.modes.size() << " eigenvalues (" << a.solver << ") in " << p.seconds
+            << " s\n";
+  std::cout << "  real [1/s]     freq [Hz]   damping    residual   mode\n";
+  for (const ModeReport& m : p.modes) {
+    if (m.eigenvalue.imag() < 0.0 || m.frequency_hz > max_hz) continue;
+    std::cout << "  " << std::setw(12) << m.eigenvalue.real() << std::setw(12) << m.frequency_hz
+              << std::setw(11) << m.damping_ratio << std::setw(12) << m.residual << "   "
+              << m.name << "\n";
+  }
+  const std::string path = prefix_for(a, s.model) + "_eigen_" +
+                           std::to_string(int(std::lround(p.speed_m_per_s))) + "mps.json";
+  write_file_atomically(path, [&](std::ostream& out) {
+    JsonWriter j(out);
+    j.begin_object().field("scene", s.model.name).field("speed_m_s", p.speed_m_per_s);
+    j.field("eigen_solver", a.solver).field("states", int(p.linear.A.rows()));
+    j.key("removed_cyclic_states").begin_array();
+    for (const std::string& r : p.linear.removed_states) j.value(r);
+    j.end_array().key("modes").begin_array();
+    for (const ModeReport& m : p.modes)
+      j.begin_object()
+          .field("real_per_s", m.eigenvalue.real())
+          .field("imag_per_s", m.eigenvalue.imag())
+          .field("frequency_hz", m.frequency_hz)
+          .field("damping_ratio", m.damping_ratio)
+          .field("neutral", m.neutral)
+          .field("residual", m.residual)
+          .field("name", m.name)
+          .end_object();
+    j.end_array().end_object();
+  });
+  std::cout << "wrote " << path << "\n";
+}
+
+// --- critical speed / sweep -----------------------------------------------------------
+void run_critical_speed(const CommonArgs& a, CriticalSpeedOptions opt) {
+  const PreparedScene s = prepare_scene(a.scene, a.overrides);
+  opt.stability = stability_options(a);
+  opt.progress = [](const std::string& line) { std::cerr << line << "\n"; };
+  std::cerr << "critical speed of " << s.model.name << " between " << opt.from_m_per_s
+            << " and " << opt.to_m_per_s << " m/s (grid " << opt.grid_step_m_per_s << " m/s)\n";
+  const CriticalSpeedResult r = find_critical_speed(s.model, s.equilibrium.state, opt);
+  const StabilityFiles files = write_stability_results(s.model, r, prefix_for(a, s.model), a.solver);
+  std::cout << std::setprecision(6);
+  if (r.unstable_at_start) {
+    std::cout << s.model.name << ": already unstable at " << r.from_m_per_s << " m/s\n";
+  } else if (r.stable_in_range) {
+    std::cout << s.model.name << ": stable over the whole range " << r.from_m_per_s << " - "
+              << r.to_m_per_s << " m/s\n";
+  } else {
+    const ModeReport& m = r.at_critical.modes[r.at_critical.least_stable];
+    std::cout << s.model.name << ": critical speed " << std::fixed << std::setprecision(2)
+              << r.critical_speed_m_per_s << " m/s (" << r.critical_speed_m_per_s * 3.6
+              << " km/h)" << std::defaultfloat << std::setprecision(5) << ", frequency "
+              << m.frequency_hz << " Hz, mode " << m.name << "\n";
+  }
+  std::cout << r.evaluations << " speed evaluations in " << r.seconds << " s\n";
+  for (const std::string& f : {files.csv, files.json, files.markdown}) std::cout << "wrote " << f << "\n";
+  for (const std::string& f : files.plots) std::cout << "wrote " << f << "\n";
+}
+
+}  // namespace
+
+void register_stability_commands(CLI::App& app) {
+  {
+    auto a = std::make_shared<CommonArgs>();
+    CLI::App* cmd = app.add_subcommand(
+        "equilibrium", "steady rolling / curving equilibrium: offsets, wheel loads, creepages");
+    add_common(cmd, *a);
+    cmd->add_option("--speed", a->overrides.speed_m_per_s, "speed V in m/s");
+    cmd->callback([a] { run_equilibrium(*a); });
+  }
+  {
+    auto a = std::make_shared<CommonArgs>();
+    auto max_hz = std::make_shared<double>(30.0);
+    CLI::App* cmd = app.add_subcommand("eigen", "eigenvalues and modes at one speed");
+    add_common(cmd, *a);
+    add_solver(cmd, *a);
+    cmd->add_option("--speed", a->overrides.speed_m_per_s, "speed V in m/s");
+    cmd->add_option("--max-frequency", *max_hz, "list modes up to this frequency (Hz)")
+        ->capture_default_str();
+    cmd->callback([a, max_hz] { run_eigen(*a, *max_hz); });
+  }
+  for (const bool is_sweep : {false, true}) {
+    auto a = std::make_shared<CommonArgs>();
+    auto opt = std::make_shared<CriticalSpeedOptions>();
+    opt->from_m_per_s = 5.0;
+    opt->to_m_per_s = 150.0;
+    opt->grid_step_m_per_s = is_sweep ? 1.0 : 2.5;
+    CLI::App* cmd = app.add_subcommand(
+        is_sweep ? "sweep" : "critical-speed",
+        is_sweep ? "eigenvalues over a speed grid: CSV, root locus, damping and frequency plots, "
+                   "report"
+                 : "critical (hunting) speed: speed grid, then bisection to 0.01 m/s; JSON, "
+                   "Markdown report and plots");
+    add_common(cmd, *a);
+    add_solver(cmd, *a);
+    cmd->add_option("--from", opt->from_m_per_s, "lowest speed (m/s)")->capture_default_str();
+    cmd->add_option("--to", opt->to_m_per_s, "highest speed (m/s)")->capture_default_str();
+    cmd->add_option("--step", opt->grid_step_m_per_s, "grid step (m/s)")->capture_default_str();
+    cmd->callback([a, opt] { run_critical_speed(*a, *opt); });
+  }
+}
+
+}  // namespace railstab

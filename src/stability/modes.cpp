@@ -1,0 +1,81 @@
+#include "stability/modes.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace railstab {
+
+std::string coordinate_word(int coordinate) {
+  static const char* words[6] = {"longitudinal", "lateral", "vertical", "roll", "pitch", "yaw"};
+  return words[coordinate];
+}
+
+double neutral_threshold(const Eigen::MatrixXd& A) {
+  return 1e-9 * std::max(1.0, A.norm());
+}
+
+std::vector<ModeReport> describe_modes(const Model& model, const LinearModel& lin,
+                                       const std::vector<EigenPair>& pairs) {
+  const double zero = neutral_threshold(lin.A);
+  const int n = model.n_coordinates;
+  std::vector<ModeReport> modes;
+  modes.reserve(pairs.size());
+  for (const EigenPair& p : pairs) {
+    ModeReport m;
+    m.eigenvalue = p.value;
+    const ModeInfo info = mode_info(p.value);
+    m.frequency_hz = info.frequency_hz;
+    m.damping_ratio = info.damping_ratio;
+    m.residual = p.residual;
+    m.neutral = std::abs(p.value) <= zero;
+    m.vector = p.vector;
+    // Kinetic energy per (body, coordinate) from the rate part of the vector.
+    double total = 0.0;
+    std::vector<Participation> parts;
+    for (size_t i = 0; i < lin.kept_states.size(); ++i) {
+      const int k = lin.kept_states[i];
+      if (k < n) continue;
+      const auto [b, c] = model.coordinate_of_state[k - n];
+      const ModelBody& body = model.bodies[b];
+      const double inertia = c < 3 ? body.mass_kg : body.inertia_kg_m2(c - 3);
+      const double e = inertia * std::norm(p.vector(Eigen::Index(i)));
+      total += e;
+      parts.push_back({body.name, c, e});
+    }
+    if (total > 0.0)
+      for (Participation& q : parts) q.share /= total;
+    std::sort(parts.begin(), parts.end(),
+              [](const Participation& a, const Participation& b) { return a.share > b.share; });
+    if (parts.size() > 6) parts.resize(6);
+    m.participation = parts;
+    if (m.neutral) {
+      m.name = "neutral (rigid-body/cyclic)";
+    } else if (!parts.empty()) {
+      // The dominant body, with each of its coordinates holding at least a
+      // quarter of the dominant share.
+      m.name = parts[0].body + " " + coordinate_word(parts[0].coordinate);
+      for (size_t j = 1; j < parts.size(); ++j)
+        if (parts[j].body == parts[0].body && parts[j].share >= 0.25 * parts[0].share)
+          m.name += "/" + coordinate_word(parts[j].coordinate);
+    }
+    modes.push_back(std::move(m));
+  }
+  return modes;
+}
+
+int least_stable_mode(const std::vector<ModeReport>& modes) {
+  int best = -1;
+  for (int i = 0; i < int(modes.size()); ++i) {
+    if (modes[i].neutral) continue;
+    if (best < 0) {
+      best = i;
+      continue;
+    }
+    const double a = modes[i].eigenvalue.real(), b = modes[best].eigenvalue.real();
+    if (a > b || (a == b && modes[i].eigenvalue.imag() > modes[best].eigenvalue.imag())) best = i;
+  }
+  return best;
+}
+
+}  // namespace railstab

@@ -1,0 +1,84 @@
+#pragma once
+// Stability over speed: at each speed the steady state (rolling on tangent
+// track, curving in an arc: the same equilibrium solver), its exact
+// linearisation, the eigenvalues and the least stable non-neutral mode; the
+// critical (hunting) speed where that mode's real part crosses zero.
+#include "equilibrium/equilibrium.hpp"
+#include "linear/linearization.hpp"
+#include "stability/modes.hpp"
+
+#include <complex>
+#include <functional>
+#include <vector>
+
+namespace railstab {
+
+enum class EigenSolverKind { dense, arpack };
+
+struct StabilityOptions {
+  EigenSolverKind solver = EigenSolverKind::dense;
+  // ARPACK: eigenvalues nearest this shift (1/s); default near a few Hz
+  // hunting with slight damping.
+  std::complex<double> arpack_shift{-0.5, 2.0 * 3.14159265358979 * 3.0};
+  int arpack_eigenvalues = 16;
+  double time_s = 0.0;  // where on the track (frames at s(t))
+};
+
+struct StabilityPoint {
+  double speed_m_per_s = 0.0;
+  EquilibriumResult equilibrium;
+  LinearModel linear;
+  std::vector<ModeReport> modes;  // dense: all; arpack: the ones found
+  int least_stable = -1;          // index into modes, -1 if none
+  double max_real_part = 0.0;     // of the non-neutral modes (1/s)
+  double seconds = 0.0;           // wall time of this point
+};
+
+// The model with its speed changed (track frames and wheelset spin rates).
+Model model_at_speed(const Model& base, double speed_m_per_s);
+
+// Evaluates speeds in sequence, each equilibrium starting from the previous
+// one (continuation).
+class SpeedStability {
+ public:
+  SpeedStability(const Model& base, const Eigen::VectorXd& equilibrium_guess,
+                 StabilityOptions options = {});
+  StabilityPoint at(double speed_m_per_s);
+
+ private:
+  Model base_;
+  StabilityOptions options_;
+  Eigen::VectorXd last_equilibrium_;
+  double last_speed_;
+};
+
+std::vector<EigenPair> solve_eigen(const Eigen::MatrixXd& A, const StabilityOptions& options);
+
+struct CriticalSpeedResult {
+  double from_m_per_s = 0.0, to_m_per_s = 0.0;
+  bool stable_in_range = true;       // no crossing and stable throughout
+  bool unstable_at_start = false;    // already unstable at the lowest speed
+  double critical_speed_m_per_s = 0.0;
+  double speed_tolerance_m_per_s = 0.0;
+  StabilityPoint at_critical;        // the stable side of the final bracket
+  std::vector<StabilityPoint> grid;  // the whole speed grid (for root locus and plots)
+  int evaluations = 0;
+  double seconds = 0.0;
+};
+
+struct CriticalSpeedOptions {
+  double from_m_per_s = 5.0, to_m_per_s = 100.0, grid_step_m_per_s = 5.0;
+  double tolerance_m_per_s = 0.01;
+  StabilityOptions stability;
+  std::function<void(const std::string&)> progress;
+};
+
+// Modes followed across the speed grid by eigenvector continuity (MAC), not
+// by sort order: track_id[i][j] is the track of grid[i].modes[j] (-1 for
+// non-oscillatory or neutral modes and for Im < 0 partners).
+std::vector<std::vector<int>> track_modes(const std::vector<StabilityPoint>& grid);
+
+CriticalSpeedResult find_critical_speed(const Model& base, const Eigen::VectorXd& equilibrium_guess,
+                                        const CriticalSpeedOptions& options);
+
+}  // namespace railstab
