@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
-# Quick-start command 1: install packages, build, run the main job.
-# Until the critical-speed job exists the main job is the thesis bogie on
-# tangent track at 20 and 40 m/s (1 mm initial offset), with plots in out/.
+# Quick-start command 1: install packages, build, run the main job: the
+# critical-speed report of the thesis vehicle on tangent track and in the
+# R = 1000 m canted arc (Markdown reports, JSON and plots in out/).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install_deps.sh
 bash scripts/build.sh
-./build/railstab simulate cases/thesis_bogie_tangent.toml --speed 20 --out out
-./build/railstab simulate cases/thesis_bogie_tangent.toml --speed 40 --out out
+./build/railstab critical-speed cases/thesis_vehicle_tangent.toml --out out
+./build/railstab critical-speed cases/thesis_vehicle_curve.toml --arc-length 2000 --out out
+echo "reports: out/thesis_vehicle_tangent_critical_speed.md out/thesis_vehicle_curve_critical_speed.md"

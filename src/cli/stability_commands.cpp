@@ -21,6 +21,7 @@ struct CommonArgs {
   SceneOverrides overrides;
   std::string out_dir = "out";
   std::string solver = "dense";
+  double hunting_band_hz = 20.0;
 };
 
 void add_common(CLI::App* cmd, CommonArgs& a) {
@@ -36,11 +37,16 @@ void add_solver(CLI::App* cmd, CommonArgs& a) {
                                         "(shift-invert near the hunting band)")
       ->check(CLI::IsMember({"dense", "arpack"}))
       ->capture_default_str();
+  cmd->add_option("--hunting-band", a.hunting_band_hz,
+                  "highest mode frequency (Hz) that decides stability; faster unstable modes "
+                  "are reported as warnings")
+      ->capture_default_str();
 }
 
 StabilityOptions stability_options(const CommonArgs& a) {
   StabilityOptions o;
   o.solver = a.solver == "arpack" ? EigenSolverKind::arpack : EigenSolverKind::dense;
+  o.max_frequency_hz = a.hunting_band_hz;
   return o;
 }
 
@@ -166,9 +172,10 @@ void run_critical_speed(const CommonArgs& a, CriticalSpeedOptions opt) {
   std::cout << std::setprecision(6);
   if (r.unstable_at_start) {
     std::cout << s.model.name << ": already unstable at " << r.from_m_per_s << " m/s\n";
-  } else if (r.stable_in_range) {
-    std::cout << s.model.name << ": stable over the whole range " << r.from_m_per_s << " - "
-              << r.to_m_per_s << " m/s\n";
+  } else if (!r.critical_speed_found) {
+    const double top = r.grid.back().speed_m_per_s;
+    std::cout << s.model.name << ": stable over the whole range analysed " << r.from_m_per_s
+              << " - " << top << " m/s\n";
   } else {
     const ModeReport& m = r.at_critical.modes[r.at_critical.least_stable];
     std::cout << s.model.name << ": critical speed " << std::fixed << std::setprecision(2)
@@ -176,6 +183,22 @@ void run_critical_speed(const CommonArgs& a, CriticalSpeedOptions opt) {
               << " km/h)" << std::defaultfloat << std::setprecision(5) << ", frequency "
               << m.frequency_hz << " Hz, mode " << m.name << "\n";
   }
+  if (r.equilibrium_lost_at_m_per_s > 0.0)
+    std::cout << "no steady state from " << r.equilibrium_lost_at_m_per_s
+              << " m/s: " << r.equilibrium_error << "\n";
+  for (const StabilityPoint& p : r.grid)
+    if (!p.validity_warning.empty()) {
+      std::cout << "warning from " << p.speed_m_per_s << " m/s: " << p.validity_warning << "\n";
+      break;
+    }
+  for (const StabilityPoint& p : r.grid)
+    if (!p.unstable_above_band.empty()) {
+      const ModeReport& m = p.modes[p.unstable_above_band.front()];
+      std::cout << "warning from " << p.speed_m_per_s << " m/s: mode above the hunting band ("
+                << opt.stability.max_frequency_hz << " Hz) unstable: " << m.name << " at "
+                << m.frequency_hz << " Hz, real part " << m.eigenvalue.real() << " 1/s\n";
+      break;
+    }
   std::cout << r.evaluations << " speed evaluations in " << r.seconds << " s\n";
   for (const std::string& f : {files.csv, files.json, files.markdown}) std::cout << "wrote " << f << "\n";
   for (const std::string& f : files.plots) std::cout << "wrote " << f << "\n";

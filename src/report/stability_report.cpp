@@ -79,7 +79,7 @@ std::vector<std::string> plot_stability(const std::string& prefix, const std::st
        << " && $7==0 && $3>=-20 ? $5 : 1/0):1 with points pt 7 ps 0.6 palette notitle\n";
     gp << "set datafile separator whitespace\nunset yrange\nunset xrange\nset autoscale\n"
        << "unset cblabel\nunset arrow 2\n";
-    const double vc = r.stable_in_range ? NAN : r.critical_speed_m_per_s;
+    const double vc = r.critical_speed_found ? r.critical_speed_m_per_s : NAN;
     auto marker = [&](std::ostream& o) {
       if (std::isfinite(vc))
         o << "set arrow 1 from " << vc << ", graph 0 to " << vc
@@ -128,8 +128,10 @@ void write_json(const std::string& path, const Model& model, const CriticalSpeed
     j.begin_object().field("scene", model.name).field("source", model.source_path);
     j.key("speed_range_m_s").begin_array().value(r.from_m_per_s).value(r.to_m_per_s).end_array();
     j.field("stable_in_range", r.stable_in_range).field("unstable_at_start", r.unstable_at_start);
-    const bool found = !r.stable_in_range && !r.unstable_at_start;
-    if (found) {
+    if (r.equilibrium_lost_at_m_per_s > 0.0)
+      j.field("equilibrium_lost_at_m_s", r.equilibrium_lost_at_m_per_s)
+          .field("equilibrium_error", r.equilibrium_error);
+    if (r.critical_speed_found) {
       const ModeReport& m = r.at_critical.modes[r.at_critical.least_stable];
       j.field("critical_speed_m_s", r.critical_speed_m_per_s)
           .field("critical_speed_tolerance_m_s", r.speed_tolerance_m_per_s)
@@ -154,6 +156,14 @@ void write_json(const std::string& path, const Model& model, const CriticalSpeed
     for (const StabilityPoint& p : r.grid)
       for (const ModeReport& m : p.modes) worst_residual = std::max(worst_residual, m.residual);
     j.field("max_eigenpair_residual", worst_residual);
+    j.key("unstable_modes_above_hunting_band").begin_array();
+    for (const StabilityPoint& p : r.grid)
+      for (int i : p.unstable_above_band) {
+        j.begin_object().field("speed_m_s", p.speed_m_per_s);
+        write_mode_json(j, p.modes[i]);
+        j.end_object();
+      }
+    j.end_array();
     j.key("least_stable_by_speed").begin_array();
     for (const StabilityPoint& p : r.grid) {
       j.begin_object().field("speed_m_s", p.speed_m_per_s);
@@ -176,11 +186,15 @@ void write_markdown(const std::string& path, const Model& model, const CriticalS
        << r.to_m_per_s << " m/s, " << (r.grid.empty() ? 0 : r.grid.front().linear.A.rows())
        << " states after removing " << (r.grid.empty() ? 0 : r.grid.front().linear.removed_states.size())
        << " cyclic coordinates, eigen-solver " << solver << ".\n\n";
+    if (r.equilibrium_lost_at_m_per_s > 0.0)
+      md << "No steady state at " << r.equilibrium_lost_at_m_per_s
+         << " m/s and above (" << r.equilibrium_error << "); the analysis covers the speeds "
+         << "below.\n\n";
     if (r.unstable_at_start) {
       md << "**Already unstable at " << r.from_m_per_s << " m/s**: lower the start speed.\n\n";
-    } else if (r.stable_in_range) {
-      md << "**Stable over the whole range** (no non-neutral mode crosses into the right "
-            "half-plane).\n\n";
+    } else if (!r.critical_speed_found) {
+      md << "**Stable over the whole range analysed** (no non-neutral mode crosses into the "
+            "right half-plane).\n\n";
     } else {
       const ModeReport& m = r.at_critical.modes[r.at_critical.least_stable];
       md << "| result | value |\n|---|---|\n"
@@ -197,7 +211,20 @@ void write_markdown(const std::string& path, const Model& model, const CriticalS
            << " |\n";
       md << "\n";
     }
-    md << "Least stable mode by speed:\n\n| speed [m/s] | real part [1/s] | frequency [Hz] | "
+    for (const StabilityPoint& p : r.grid)
+      if (!p.validity_warning.empty()) {
+        md << "- from " << p.speed_m_per_s << " m/s: " << p.validity_warning << "\n";
+        break;
+      }
+    for (const StabilityPoint& p : r.grid)
+      if (!p.unstable_above_band.empty()) {
+        const ModeReport& m = p.modes[p.unstable_above_band.front()];
+        md << "- from " << p.speed_m_per_s << " m/s a mode above the hunting band is unstable: "
+           << m.name << " at " << m.frequency_hz << " Hz, real part " << m.eigenvalue.real()
+           << " 1/s (wheel-rail contact mode; the Hertz contact has no damping)\n";
+        break;
+      }
+    md << "\nLeast stable mode by speed:\n\n| speed [m/s] | real part [1/s] | frequency [Hz] | "
           "damping ratio | mode |\n|---|---|---|---|---|\n";
     for (const StabilityPoint& p : r.grid) {
       if (p.least_stable < 0) continue;

@@ -64,10 +64,10 @@ std::vector<ModeReport> describe_modes(const Model& model, const LinearModel& li
   return modes;
 }
 
-int least_stable_mode(const std::vector<ModeReport>& modes) {
+int least_stable_mode(const std::vector<ModeReport>& modes, double max_frequency_hz) {
   int best = -1;
   for (int i = 0; i < int(modes.size()); ++i) {
-    if (modes[i].neutral) continue;
+    if (modes[i].neutral || modes[i].frequency_hz > max_frequency_hz) continue;
     if (best < 0) {
       best = i;
       continue;

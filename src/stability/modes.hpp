@@ -38,9 +38,9 @@ std::vector<ModeReport> describe_modes(const Model& model, const LinearModel& li
 // eigen-solver relative to the matrix norm.
 double neutral_threshold(const Eigen::MatrixXd& A);
 
-// Index of the least stable non-neutral mode (largest real part; among
-// equal real parts the oscillatory one), or -1 if there is none.
-int least_stable_mode(const std::vector<ModeReport>& modes);
+// Index of the least stable non-neutral mode at or below max_frequency_hz
+// (largest real part; among equal real parts the oscillatory one), or -1.
+int least_stable_mode(const std::vector<ModeReport>& modes, double max_frequency_hz);
 
 std::string coordinate_word(int coordinate);
 

@@ -53,8 +53,24 @@ StabilityPoint SpeedStability::at(double speed_m_per_s) {
   lin_opt.time_s = options_.time_s;
   p.linear = linearize(model, p.equilibrium.state, lin_opt);
   p.modes = describe_modes(model, p.linear, solve_eigen(p.linear.A, options_));
-  p.least_stable = least_stable_mode(p.modes);
+  p.least_stable = least_stable_mode(p.modes, options_.max_frequency_hz);
+  for (int i = 0; i < int(p.modes.size()); ++i)
+    if (!p.modes[i].neutral && p.modes[i].frequency_hz > options_.max_frequency_hz &&
+        p.modes[i].eigenvalue.real() > 0.0 && p.modes[i].eigenvalue.imag() >= 0.0)
+      p.unstable_above_band.push_back(i);
   p.max_real_part = p.least_stable >= 0 ? p.modes[p.least_stable].eigenvalue.real() : -INFINITY;
+  for (const ModelBody& b : model.bodies) {
+    const int k = b.state_index[int(CoordinateIndex::y)];
+    if (b.contact < 0 || k < 0) continue;
+    const double clearance = model.contacts[b.contact].spec.flange_clearance_m;
+    if (std::abs(p.equilibrium.state(k)) > clearance && p.validity_warning.empty()) {
+      std::ostringstream w;
+      w << b.name << " steady lateral shift " << p.equilibrium.state(k) * 1e3
+        << " mm exceeds the flange clearance " << clearance * 1e3
+        << " mm: flange contact, outside the model's validity";
+      p.validity_warning = w.str();
+    }
+  }
   p.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return p;
 }
@@ -87,12 +103,22 @@ CriticalSpeedResult find_critical_speed(const Model& base, const Eigen::VectorXd
   for (int i = 0; i <= n_grid; ++i) {
     const double v =
         std::min(options.to_m_per_s, options.from_m_per_s + i * options.grid_step_m_per_s);
-    r.grid.push_back(stability.at(v));
+    try {
+      r.grid.push_back(stability.at(v));
+    } catch (const std::runtime_error& e) {
+      r.equilibrium_lost_at_m_per_s = v;
+      r.equilibrium_error = e.what();
+      if (options.progress) options.progress(std::string("  stopped: ") + e.what());
+      break;
+    }
     report(r.grid.back());
     if (crossing < 0 && r.grid.back().max_real_part > 0.0) crossing = i;
   }
+  if (r.grid.empty())
+    throw std::runtime_error("critical speed: no steady state even at the lowest speed: " +
+                             r.equilibrium_error);
   if (crossing < 0) {
-    r.stable_in_range = true;
+    r.stable_in_range = r.equilibrium_lost_at_m_per_s == 0.0;
   } else if (crossing == 0) {
     r.stable_in_range = false;
     r.unstable_at_start = true;
@@ -114,6 +140,7 @@ CriticalSpeedResult find_critical_speed(const Model& base, const Eigen::VectorXd
     r.critical_speed_m_per_s =
         lo.speed_m_per_s + (hi.speed_m_per_s - lo.speed_m_per_s) * (-a) / (b - a);
     r.at_critical = std::move(lo);
+    r.critical_speed_found = true;
   }
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;

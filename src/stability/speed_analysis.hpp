@@ -22,6 +22,11 @@ struct StabilityOptions {
   std::complex<double> arpack_shift{-0.5, 2.0 * 3.14159265358979 * 3.0};
   int arpack_eigenvalues = 16;
   double time_s = 0.0;  // where on the track (frames at s(t))
+  // Hunting band: the stability decision looks at modes up to this
+  // frequency. Faster modes (wheel-rail contact vertical/roll, ~150 Hz,
+  // undamped by the Hertz law) are reported when unstable but do not set the
+  // critical speed.
+  double max_frequency_hz = 20.0;
 };
 
 struct StabilityPoint {
@@ -31,6 +36,11 @@ struct StabilityPoint {
   std::vector<ModeReport> modes;  // dense: all; arpack: the ones found
   int least_stable = -1;          // index into modes, -1 if none
   double max_real_part = 0.0;     // of the non-neutral modes (1/s)
+  // Non-empty when a wheelset's steady lateral shift exceeds its flange
+  // clearance: the flangeless contact model is outside its validity there.
+  std::string validity_warning;
+  // Unstable non-neutral modes above the hunting band (indices into modes).
+  std::vector<int> unstable_above_band;
   double seconds = 0.0;           // wall time of this point
 };
 
@@ -58,12 +68,18 @@ struct CriticalSpeedResult {
   double from_m_per_s = 0.0, to_m_per_s = 0.0;
   bool stable_in_range = true;       // no crossing and stable throughout
   bool unstable_at_start = false;    // already unstable at the lowest speed
+  bool critical_speed_found = false; // a crossing was bracketed and refined
   double critical_speed_m_per_s = 0.0;
   double speed_tolerance_m_per_s = 0.0;
   StabilityPoint at_critical;        // the stable side of the final bracket
   std::vector<StabilityPoint> grid;  // the whole speed grid (for root locus and plots)
   int evaluations = 0;
   double seconds = 0.0;
+  // The grid stops at the first speed without a steady state (e.g. a cant
+  // deficiency the flangeless contact cannot carry); the analysis covers
+  // the speeds below it.
+  double equilibrium_lost_at_m_per_s = 0.0;  // 0: never lost
+  std::string equilibrium_error;
 };
 
 struct CriticalSpeedOptions {
