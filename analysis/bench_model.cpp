@@ -5,7 +5,9 @@
 #include "cli/scene_setup.hpp"
 #include "integrate/integrator.hpp"
 #include "linear/jacobian.hpp"
+#include "linear/linearization.hpp"
 #include "model/equations_of_motion.hpp"
+#include "stability/speed_analysis.hpp"
 
 #include <chrono>
 #include <cstdio>
@@ -39,13 +41,35 @@ void bench_scene(const std::string& path) {
   const double t_rhs_frames = time_per_call([&] { xdot = rhs(model, 0.0, x); });
   const double t_ad = time_per_call([&] { rhs_jacobian_ad(model, 0.0, x); });
   const double t_fd = time_per_call([&] { rhs_jacobian_forward_difference(model, 0.0, x); });
+  const double t_cd = time_per_call([&] { rhs_jacobian_central_difference(model, 0.0, x); });
   std::printf("%s: %d bodies, %d states\n", model.name.c_str(), int(model.bodies.size()),
               model.state_size());
   std::printf("  rhs (frames given)        %10.2f us\n", t_rhs * 1e6);
   std::printf("  rhs (with track frames)   %10.2f us\n", t_rhs_frames * 1e6);
   std::printf("  AD Jacobian               %10.2f us  (%.1f rhs)\n", t_ad * 1e6, t_ad / t_rhs);
   std::printf("  forward-diff Jacobian     %10.2f us  (%.1f rhs)\n", t_fd * 1e6, t_fd / t_rhs);
+  std::printf("  5-point central Jacobian  %10.2f us  (%.1f rhs)\n", t_cd * 1e6, t_cd / t_rhs);
   std::printf("  ratio AD / forward diff   %10.2f\n", t_ad / t_fd);
+
+  // Eigen-analysis at the steady state, dense vs ARPACK (16 modes near a
+  // lightly damped 3 Hz), and a full critical-speed search.
+  const LinearModel lin = linearize(model, scene.equilibrium.state);
+  StabilityOptions arpack;
+  arpack.solver = EigenSolverKind::arpack;
+  const double t_dense = time_per_call([&] { eigen_dense(lin.A); });
+  const double t_arpack = time_per_call([&] { solve_eigen(lin.A, arpack); });
+  std::printf("  dense eigen (%d states)   %10.2f us\n", int(lin.A.rows()), t_dense * 1e6);
+  std::printf("  ARPACK 16 eigenvalues     %10.2f us  (dense/ARPACK %.2f)\n", t_arpack * 1e6,
+              t_dense / t_arpack);
+  CriticalSpeedOptions cs;
+  cs.from_m_per_s = 5.0;
+  cs.to_m_per_s = 150.0;
+  cs.grid_step_m_per_s = 2.5;
+  CriticalSpeedResult r;
+  const double t_search = time_per_call([&] { r = find_critical_speed(model, scene.equilibrium.state, cs); });
+  std::printf("  critical-speed search     %10.3f s   (%d speeds, V_crit %s%.2f m/s)\n", t_search,
+              r.evaluations, r.critical_speed_found ? "" : "none; ",
+              r.critical_speed_found ? r.critical_speed_m_per_s : 0.0);
 
   IntegrationOptions opt;
   opt.t_end_s = 20.0;
