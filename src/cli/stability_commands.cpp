@@ -100,13 +100,17 @@ void run_equilibrium(const CommonArgs& a) {
             .field("creepage_longitudinal", w.creep_x)
             .field("creepage_lateral", w.creep_y)
             .field("creepage_spin_per_m", w.creep_spin_per_m)
-            .field("force_longitudinal_N", w.force_I.x())
-            .field("force_lateral_N", w.force_I.y())
-            .field("force_vertical_N", w.force_I.z())
+            .field("creep_force_longitudinal_N", w.creep_force_x_N)
+            .field("creep_force_lateral_N", w.creep_force_y_N)
+            .field("spin_creep_moment_N_m", w.spin_moment_N_m)
+            .field("total_force_on_wheelset_I_N_x", w.force_I.x())
+            .field("total_force_on_wheelset_I_N_y", w.force_I.y())
+            .field("total_force_on_wheelset_I_N_z", w.force_I.z())
             .end_object();
         std::cout << "      " << (w.side > 0 ? "left " : "right") << " wheel load "
                   << w.normal_force_N << " N, creepages (" << w.creep_x << ", " << w.creep_y
-                  << ", " << w.creep_spin_per_m << " 1/m)\n";
+                  << ", " << w.creep_spin_per_m << " 1/m), creep forces (" << w.creep_force_x_N
+                  << ", " << w.creep_force_y_N << " N, " << w.spin_moment_N_m << " N m)\n";
       }
       j.end_array().end_object();
     }

@@ -36,6 +36,7 @@ template <class T> struct WheelContact {
   T rolling_radius_m{};
   T semi_axis_a_m{}, semi_axis_b_m{};
   T creep_x{}, creep_y{}, creep_spin_per_m{};
+  T creep_force_x_N{}, creep_force_y_N{}, spin_moment_N_m{};  // in the contact frame
   Vec3<T> force_I, moment_I;  // on the wheelset, about its CM, in I
   Vec3<T> point_I;            // contact point from the wheelset CM, in I
 };
@@ -127,6 +128,9 @@ WheelContact<T> evaluate_wheel_contact(const ModelContact& contact, const BodyMo
   const T Fx = -f.f11_N * out.creep_x;
   const T Fy = -f.f22_N * out.creep_y - f.f23_N_m * out.creep_spin_per_m;
   const T Mz = f.f23_N_m * out.creep_y - f.f33_N_m2 * out.creep_spin_per_m;
+  out.creep_force_x_N = Fx;
+  out.creep_force_y_N = Fy;
+  out.spin_moment_N_m = Mz;
   const Vec3<T> tangential_I = Fx * l_I + Fy * t_I;
   out.force_I += tangential_I;
   out.moment_I += out.point_I.cross(tangential_I) + Mz * nu_I;
