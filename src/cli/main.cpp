@@ -2,6 +2,7 @@
 // src/cli/*_command.cpp; this file only wires them and reports errors.
 #include "cli/simulate_command.hpp"
 #include "cli/stability_commands.hpp"
+#include "cli/verify_command.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -13,6 +14,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   railstab::register_simulate_command(app);
   railstab::register_stability_commands(app);
+  railstab::register_verify_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,129 @@
+#include "cli/verify_command.hpp"
+
+#include "cli/scene_setup.hpp"
+#include "io/json_writer.hpp"
+#include "io/output_files.hpp"
+#include "report/time_plots.hpp"
+#include "verify/verification.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+
+namespace railstab {
+
+namespace {
+
+struct VerifyArgs {
+  std::string scene;
+  SceneOverrides overrides;
+  VerificationOptions options;
+  std::string json;
+  std::string out_dir = "out";
+};
+
+void write_verification_json(const std::string& path, const Model& model,
+                             const VerificationResult& r) {
+  write_file_atomically(path, [&](std::ostream& out) {
+    JsonWriter j(out);
+    j.begin_object()
+        .field("scene", model.name)
+        .field("speed_m_s", r.speed_m_per_s)
+        .field("mode", r.mode_name)
+        .field("signal", r.signal)
+        .field("eigen_real_per_s", r.eigen_real_per_s)
+        .field("eigen_frequency_hz", r.eigen_frequency_hz)
+        .field("fitted_real_per_s", r.fitted_real_per_s)
+        .field("fitted_frequency_hz", r.fitted_frequency_hz)
+        .field("real_difference_relative", r.real_difference_relative)
+        .field("frequency_difference_relative", r.frequency_difference_relative)
+        .field("fit_rms_residual_relative", r.fit.rms_residual / r.fit.rms_signal)
+        .field("fit_window_s_from", r.window_start_s)
+        .field("fit_window_s_to", r.window_end_s)
+        .field("response", r.fitted_real_per_s > 0.0 ? "grows" : "decays")
+        .field("integration_error_relative", r.integration_error_relative)
+        .field("integration_wall_seconds", r.integration_seconds)
+        .end_object();
+  });
+}
+
+std::string plot_fit(const VerificationResult& r, const std::string& prefix, const Model& model) {
+  const std::string data = prefix + "_fit.dat";
+  write_file_atomically(data, [&](std::ostream& out) {
+    out << std::setprecision(10);
+    const double t0 = r.window_times.front();
+    for (size_t i = 0; i < r.window_times.size(); ++i) {
+      const double tau = r.window_times[i] - t0;
+      const double fit = std::exp(r.fit.sigma_per_s * tau) *
+                             (r.fit.a * std::cos(r.fit.omega_rad_s * tau) +
+                              r.fit.b * std::sin(r.fit.omega_rad_s * tau)) +
+                         r.fit.c;
+      out << r.window_times[i] << ' ' << r.window_signal[i] * 1e3 << ' ' << fit * 1e3 << '\n';
+    }
+  });
+  const std::string png = prefix + "_fit.png";
+  const std::string script = prefix + "_fit.gp";
+  write_file_atomically(script, [&](std::ostream& gp) {
+    gp << "set terminal pngcairo size 900,480 font 'Sans,10' noenhanced\nset output '" << png
+       << "'\nset grid\nset xlabel 'time [s]'\nset ylabel '" << r.signal << " - equilibrium [mm]'\n"
+       << "set title '" << model.name << " at " << r.speed_m_per_s << " m/s: eigenvalue "
+       << r.eigen_real_per_s << " 1/s, " << r.eigen_frequency_hz << " Hz; fit "
+       << r.fitted_real_per_s << " 1/s, " << r.fitted_frequency_hz << " Hz'\n"
+       << "plot '" << data << "' using 1:2 with lines lw 2 title 'nonlinear time domain', '" << data
+       << "' using 1:3 with lines dt 2 lw 1.5 title 'fitted damped sinusoid'\n";
+  });
+  run_gnuplot(script);
+  return png;
+}
+
+void run_verify(const VerifyArgs& a) {
+  const PreparedScene s = prepare_scene(a.scene, a.overrides);
+  std::cerr << "verify " << s.model.name << " at " << s.model.speed_m_per_s
+            << " m/s: eigen-analysis, then two time-domain runs (tolerance and 100x tighter)\n";
+  const VerificationResult r = verify_least_stable_mode(s.model, s.equilibrium.state, a.options);
+  const std::string prefix =
+      (std::filesystem::path(a.out_dir) /
+       (s.model.name + "_verify_" + std::to_string(int(std::lround(r.speed_m_per_s))) + "mps"))
+          .string();
+  const std::string json = a.json.empty() ? prefix + ".json" : a.json;
+  write_verification_json(json, s.model, r);
+  const std::string png = plot_fit(r, prefix, s.model);
+  std::cout << std::setprecision(6) << s.model.name << " at " << r.speed_m_per_s
+            << " m/s, least stable mode: " << r.mode_name << " (signal " << r.signal << ")\n"
+            << "                 real part [1/s]   frequency [Hz]\n"
+            << "  eigenvalue     " << std::setw(15) << r.eigen_real_per_s << std::setw(17)
+            << r.eigen_frequency_hz << "\n"
+            << "  time domain    " << std::setw(15) << r.fitted_real_per_s << std::setw(17)
+            << r.fitted_frequency_hz << "\n"
+            << "  difference     " << std::setw(14) << 100.0 * r.real_difference_relative << "%"
+            << std::setw(16) << 100.0 * r.frequency_difference_relative << "%\n"
+            << "response " << (r.fitted_real_per_s > 0.0 ? "grows" : "decays") << "; fit window "
+            << r.window_start_s << "-" << r.window_end_s << " s, fit residual "
+            << r.fit.rms_residual / r.fit.rms_signal << " of the signal rms\n"
+            << "integration: error estimate " << r.integration_error_relative
+            << " of the signal (vs 100x tighter tolerances), wall " << r.integration_seconds
+            << " s\nwrote " << json << "\nwrote " << png << "\n";
+}
+
+}  // namespace
+
+void register_verify_command(CLI::App& app) {
+  auto a = std::make_shared<VerifyArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "verify", "time-domain check of the least stable mode: fitted rate and frequency against "
+                "the eigenvalue");
+  cmd->add_option("scene", a->scene, "scene file (TOML)")->required()->check(CLI::ExistingFile);
+  cmd->add_option("--speed", a->overrides.speed_m_per_s, "speed V in m/s");
+  cmd->add_option("--arc-length", a->overrides.reference_arc_length_m,
+                  "arc length (m) of the reference point at t = 0");
+  cmd->add_option("--amplitude", a->options.amplitude_m,
+                  "initial lateral amplitude (m) of the wheelset that moves most")
+      ->capture_default_str();
+  cmd->add_option("--json", a->json, "JSON output (default OUT/<scene>_verify_<V>mps.json)");
+  cmd->add_option("--out", a->out_dir, "output directory")->capture_default_str();
+  cmd->callback([a] { run_verify(*a); });
+}
+
+}  // namespace railstab

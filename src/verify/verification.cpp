@@ -1,0 +1,119 @@
+#include "verify/verification.hpp"
+
+#include "stability/speed_analysis.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace railstab {
+
+namespace {
+
+// Perturbation of the full state along the real part of a mode, scaled so
+// the largest wheelset lateral displacement is `amplitude`; also returns the
+// lateral state that moves most (the signal to fit).
+Eigen::VectorXd mode_perturbation(const Model& model, const LinearModel& lin,
+                                  const Eigen::VectorXcd& v, double amplitude, int& signal_state) {
+  Eigen::VectorXd dx = Eigen::VectorXd::Zero(model.state_size());
+  for (size_t i = 0; i < lin.kept_states.size(); ++i) dx(lin.kept_states[i]) = v(Eigen::Index(i)).real();
+  double largest = 0.0;
+  signal_state = -1;
+  for (int k = 0; k < model.n_coordinates; ++k) {
+    const auto [b, c] = model.coordinate_of_state[k];
+    if (c != int(CoordinateIndex::y)) continue;
+    const double weight = model.bodies[b].contact >= 0 ? std::abs(dx(k)) : 0.0;
+    if (weight > largest) {
+      largest = weight;
+      signal_state = k;
+    }
+  }
+  if (signal_state < 0 || largest == 0.0)
+    throw std::runtime_error("verify: the least stable mode moves no wheelset laterally");
+  return dx * (amplitude / largest);
+}
+
+}  // namespace
+
+VerificationResult verify_least_stable_mode(const Model& model, const Eigen::VectorXd& equilibrium,
+                                            const VerificationOptions& options) {
+  VerificationResult out;
+  out.speed_m_per_s = model.speed_m_per_s;
+  StabilityOptions so;
+  so.max_frequency_hz = options.hunting_band_hz;
+  SpeedStability stability(model, equilibrium, so);
+  const StabilityPoint point = stability.at(model.speed_m_per_s);
+  if (point.least_stable < 0) throw std::runtime_error("verify: no mode in the hunting band");
+  const ModeReport& mode = point.modes[point.least_stable];
+  if (mode.frequency_hz <= 0.0)
+    throw std::runtime_error("verify: the least stable mode (" + mode.name +
+                             ") does not oscillate; nothing to fit a frequency to");
+  out.eigenvalue = mode.eigenvalue;
+  out.mode_name = mode.name;
+  out.eigen_real_per_s = mode.eigenvalue.real();
+  out.eigen_frequency_hz = mode.frequency_hz;
+
+  // Rotate the eigenvector so the signal state's component is real (the
+  // perturbation then starts at a crest, the best-conditioned fit).
+  Eigen::VectorXcd v = mode.vector;
+  int signal_state = -1;
+  mode_perturbation(model, point.linear, v, 1.0, signal_state);
+  Eigen::Index signal_in_lin = 0;
+  for (size_t i = 0; i < point.linear.kept_states.size(); ++i)
+    if (point.linear.kept_states[i] == signal_state) signal_in_lin = Eigen::Index(i);
+  v *= std::conj(v(signal_in_lin)) / std::abs(v(signal_in_lin));
+  const Eigen::VectorXd dx = mode_perturbation(model, point.linear, v, options.amplitude_m, signal_state);
+  out.signal = model.state_name(signal_state);
+
+  const double period = 1.0 / mode.frequency_hz;
+  double t_end = std::min(options.max_t_end_s, options.periods * period);
+  if (mode.eigenvalue.real() > 0.0)
+    t_end = std::min(t_end, options.settle_periods * period +
+                                std::log(options.max_growth) / mode.eigenvalue.real());
+  out.window_start_s = options.settle_periods * period;
+  out.window_end_s = t_end;
+
+  IntegrationOptions io;
+  io.t_end_s = t_end;
+  io.output_interval_s = period / 50.0;
+  io.relative_tolerance = options.relative_tolerance;
+  io.absolute_tolerance = options.absolute_tolerance;
+  const Eigen::VectorXd x0 = point.equilibrium.state + dx;
+  out.trajectory = integrate(model, x0, io);
+  out.integration_seconds = out.trajectory.stats.wall_seconds;
+  if (!out.trajectory.stopped_early.empty())
+    throw std::runtime_error("verify: the time integration stopped early: " +
+                             out.trajectory.stopped_early);
+
+  const double y_eq = point.equilibrium.state(signal_state);
+  for (size_t i = 0; i < out.trajectory.times_s.size(); ++i) {
+    const double t = out.trajectory.times_s[i];
+    if (t < out.window_start_s) continue;
+    out.window_times.push_back(t);
+    out.window_signal.push_back(out.trajectory.states[i](signal_state) - y_eq);
+  }
+  out.fit = fit_damped_sinusoid(out.window_times, out.window_signal, mode.eigenvalue.real(),
+                                std::abs(mode.eigenvalue.imag()));
+  out.fitted_real_per_s = out.fit.sigma_per_s;
+  out.fitted_frequency_hz = out.fit.omega_rad_s / (2.0 * std::numbers::pi);
+  out.real_difference_relative =
+      std::abs(out.fitted_real_per_s - out.eigen_real_per_s) / std::abs(out.eigen_real_per_s);
+  out.frequency_difference_relative =
+      std::abs(out.fitted_frequency_hz - out.eigen_frequency_hz) / out.eigen_frequency_hz;
+
+  // Integration error estimate: the same run at 100x tighter tolerances.
+  IntegrationOptions tight = io;
+  tight.relative_tolerance /= 100.0;
+  tight.absolute_tolerance /= 100.0;
+  const Trajectory ref = integrate(model, x0, tight);
+  double diff = 0.0, peak = 0.0;
+  const size_t n = std::min(ref.states.size(), out.trajectory.states.size());
+  for (size_t i = 0; i < n; ++i) {
+    diff = std::max(diff, std::abs(ref.states[i](signal_state) - out.trajectory.states[i](signal_state)));
+    peak = std::max(peak, std::abs(ref.states[i](signal_state) - y_eq));
+  }
+  out.integration_error_relative = peak > 0.0 ? diff / peak : 0.0;
+  return out;
+}
+
+}  // namespace railstab

@@ -1,0 +1,49 @@
+#pragma once
+// Time-domain verification of a linear stability prediction: start the
+// nonlinear model at the steady state plus a small perturbation along the
+// least stable mode, integrate, fit a damped sinusoid to the response of the
+// body that moves most, and compare its rate and frequency with the
+// eigenvalue. The same model serves both, so agreement checks the
+// linearisation and the integration, not two models against each other.
+#include "integrate/integrator.hpp"
+#include "model/model.hpp"
+#include "verify/damped_sinusoid_fit.hpp"
+
+#include <complex>
+#include <string>
+
+namespace railstab {
+
+struct VerificationOptions {
+  double amplitude_m = 1e-4;    // largest lateral displacement of a wheelset at t = 0
+  double periods = 15.0;        // simulated length in periods of the mode
+  double settle_periods = 2.0;  // skipped before the fit window
+  double max_t_end_s = 40.0;
+  double max_growth = 20.0;     // a growing response is fitted until this factor
+  double relative_tolerance = 1e-8;
+  double absolute_tolerance = 1e-12;
+  double hunting_band_hz = 20.0;
+};
+
+struct VerificationResult {
+  double speed_m_per_s = 0.0;
+  std::complex<double> eigenvalue;
+  std::string mode_name;
+  std::string signal;  // state whose response is fitted, e.g. "wheelset1.y_m"
+  double window_start_s = 0.0, window_end_s = 0.0;
+  DampedSinusoid fit;
+  double eigen_real_per_s = 0.0, eigen_frequency_hz = 0.0;
+  double fitted_real_per_s = 0.0, fitted_frequency_hz = 0.0;
+  double real_difference_relative = 0.0, frequency_difference_relative = 0.0;
+  // Integration error of the fitted signal, from a run at 100x tighter
+  // tolerances, relative to the signal's largest magnitude.
+  double integration_error_relative = 0.0;
+  double integration_seconds = 0.0;
+  Trajectory trajectory;
+  std::vector<double> window_times, window_signal;
+};
+
+VerificationResult verify_least_stable_mode(const Model& model, const Eigen::VectorXd& equilibrium,
+                                            const VerificationOptions& options = {});
+
+}  // namespace railstab

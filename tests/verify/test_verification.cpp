@@ -1,0 +1,44 @@
+// Time domain against eigenvalues on the same model, and the damped-sinusoid
+// fit against known signals.
+#include "cli/scene_setup.hpp"
+#include "verify/verification.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace railstab;
+
+// The fit recovers a known damped sinusoid with offset exactly (no noise),
+// from a guess 20 % off.
+TEST(DampedSinusoidFit, RecoversKnownSignal) {
+  std::vector<double> t, y;
+  for (int i = 0; i < 400; ++i) {
+    t.push_back(1.0 + 0.01 * i);
+    const double tau = t.back() - 1.0;
+    y.push_back(std::exp(-0.7 * tau) * (2e-3 * std::cos(9.0 * tau) - 1e-3 * std::sin(9.0 * tau)) +
+                1e-5);
+  }
+  const DampedSinusoid f = fit_damped_sinusoid(t, y, -0.56, 10.8);
+  EXPECT_NEAR(f.sigma_per_s, -0.7, 1e-9);
+  EXPECT_NEAR(f.omega_rad_s, 9.0, 1e-9);
+  EXPECT_NEAR(f.c, 1e-5, 1e-12);
+  EXPECT_LT(f.rms_residual, 1e-12);
+}
+
+// Thesis bogie below (20 m/s) and above (38 m/s) its critical speed: the
+// nonlinear response to a 0.1 mm perturbation along the least stable mode
+// decays / grows at the eigenvalue's rate. Targets of the issue: frequency
+// within 1 %, real part within 5 %; measured agreement is ~1e-5, limited by
+// the integration tolerance and the amplitude-squared nonlinearity.
+TEST(Verification, ThesisBogieMatchesEigenvalue) {
+  for (double v : {20.0, 38.0}) {
+    const PreparedScene s = prepare_scene(std::string(RAILSTAB_CASES_DIR) +
+                                              "/thesis_bogie_tangent.toml", {v, {}, {}});
+    const VerificationResult r = verify_least_stable_mode(s.model, s.equilibrium.state);
+    EXPECT_LT(r.frequency_difference_relative, 0.01) << v;
+    EXPECT_LT(r.real_difference_relative, 0.05) << v;
+    EXPECT_EQ(r.fitted_real_per_s > 0.0, v > 36.9) << v;  // grows above V_crit = 36.90 m/s
+    EXPECT_LT(r.integration_error_relative, 1e-4) << v;
+  }
+}
