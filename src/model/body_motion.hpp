@@ -23,6 +23,9 @@
 //    J_I G q_r'' = M_I - w x J_I w + pitch' J_I (y x w)
 //                  - J_I (h - w_rel_zx x w_T_I + R_TI^T alpha_T)
 //    h = (0, c roll' yaw', -s roll' yaw'), w_rel_zx = G [roll', 0, yaw'].
+//  Projection: q_r'' = (G_f^T J_I G_f)^-1 [G_f^T (rhs without M) + G_f^T M_spin
+//  + G_frame^T M_frame]; G_frame = G_f except that for a wheelset the spin
+//  column is zero (the axle boxes do not spin: their moments do no work on it).
 //  For an axisymmetric wheelset nothing depends on the spin angle (pitch),
 //  so linearisation sees an exactly zero Jacobian column (ERRATA 11a).
 #include "core/scalar.hpp"
@@ -43,8 +46,13 @@ template <class T> struct BodyMotion {
   // Attachment frame F: I for a wheelset (axle boxes do not spin), B otherwise.
   Mat3<T> R_WF;
   Vec3<T> w_F_W;                // angular velocity of F, in W
-  // Accumulated applied forces: force in W, moment about the CM in W.
-  Vec3<T> force_W, moment_W;
+  // Accumulated applied forces: force in W, moments about the CM in W.
+  // moment_W acts on the attachment frame F; for a wheelset that is the
+  // non-spinning axle-box frame I, whose bearings pass no torque about the
+  // axle, so it does no work on the spin. spinning_moment_W acts on the
+  // rotating wheelset itself (wheel-rail contact). For other bodies both act
+  // on the body alike.
+  Vec3<T> force_W, moment_W, spinning_moment_W;
 };
 
 template <class T>
@@ -80,6 +88,7 @@ void compute_body_motion(const ModelBody& body, const TrackFrameKinematics& trac
   }
   m.force_W.setZero();
   m.moment_W.setZero();
+  m.spinning_moment_W.setZero();
 }
 
 // Position and velocity (in W) of a point fixed in the body's attachment frame.
@@ -156,13 +165,14 @@ Eigen::Matrix<T, 6, 1> body_accelerations(const ModelBody& body, const BodyMotio
     const Mat3<T> R_IB = rot_y(pitch);
     J_I = R_IB * J_B * R_IB.transpose();
   }
-  const Vec3<T> moment_I = m.R_WI.transpose() * m.moment_W;
+  const Vec3<T> frame_moment_I = m.R_WI.transpose() * m.moment_W;
+  const Vec3<T> spinning_moment_I = m.R_WI.transpose() * m.spinning_moment_W;
   const Vec3<T> y_hat(T(0), T(1), T(0));
   const Vec3<T>& wb = m.w_B_I;
   const Vec3<T> w_T_I = m.R_TI.transpose() * w_T;
   const Vec3<T> w_rel_zx(m.qd(3), s * m.qd(5), c * m.qd(5));
   const Vec3<T> h(T(0), c * m.qd(3) * m.qd(5), -s * m.qd(3) * m.qd(5));
-  const Vec3<T> rhs_I = moment_I - wb.cross(J_I * wb) + m.qd(4) * (J_I * y_hat.cross(wb)) -
+  const Vec3<T> rhs_I = spinning_moment_I - wb.cross(J_I * wb) + m.qd(4) * (J_I * y_hat.cross(wb)) -
                         J_I * (h - w_rel_zx.cross(w_T_I) + m.R_TI.transpose() * alpha_T);
   // G columns for roll, pitch, yaw.
   Mat3<T> G;
@@ -174,7 +184,13 @@ Eigen::Matrix<T, 6, 1> body_accelerations(const ModelBody& body, const BodyMotio
   Mat3<T> G_free = Mat3<T>::Zero();
   for (int j = 0; j < n_free_rot; ++j) G_free.col(j) = G.col(free_rot[j] - 3);
   const Mat3<T> mass = G_free.transpose() * J_I * G_free;  // zero outside n x n
-  const Vec3<T> gen_force = G_free.transpose() * rhs_I;
+  // The frame moment works through the frame's own rotation: for a wheelset
+  // the spin column is absent from it.
+  Mat3<T> G_frame = G_free;
+  if (body.is_wheelset)
+    for (int j = 0; j < n_free_rot; ++j)
+      if (free_rot[j] == int(CoordinateIndex::pitch)) G_frame.col(j).setZero();
+  const Vec3<T> gen_force = G_free.transpose() * rhs_I + G_frame.transpose() * frame_moment_I;
   const Vec3<T> qdd = solve_small_spd(mass, gen_force, n_free_rot);
   for (int j = 0; j < n_free_rot; ++j) acc(free_rot[j]) = qdd(j);
   return acc;

@@ -32,6 +32,17 @@ EnergyParts mechanical_energy(const Model& model, double t_s, const Eigen::Vecto
       e.elastic_J += 0.5 * th.dot(el.stiffness.cwiseProduct(th)) + f0.dot(th);
     }
   }
+  // Hertz contact potential (prescribed loads do work from outside: none).
+  for (size_t b = 0; b < model.bodies.size(); ++b) {
+    const ModelBody& body = model.bodies[b];
+    if (body.contact < 0) continue;
+    const ModelContact& c = model.contacts[body.contact];
+    if (c.spec.normal != NormalForceKind::hertz) continue;
+    for (int side : {1, -1}) {
+      const WheelContact<double> w = evaluate_wheel_contact(c, motions[b], side, model.speed_m_per_s);
+      if (w.penetration_m > 0.0) e.contact_J += 0.4 * w.normal_force_N * w.penetration_m;
+    }
+  }
   return e;
 }
 

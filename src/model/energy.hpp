@@ -15,7 +15,8 @@ namespace railstab {
 
 struct EnergyParts {
   double kinetic_J = 0.0, gravity_J = 0.0, elastic_J = 0.0;
-  double total() const { return kinetic_J + gravity_J + elastic_J; }
+  double contact_J = 0.0;  // Hertz: integral of K delta^1.5 = 0.4 N delta per wheel
+  double total() const { return kinetic_J + gravity_J + elastic_J + contact_J; }
 };
 
 EnergyParts mechanical_energy(const Model& model, double t_s, const Eigen::VectorXd& x,

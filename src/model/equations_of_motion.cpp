@@ -70,7 +70,7 @@ void evaluate_rhs(const Model& model, double t_s, const std::vector<TrackFrameKi
       const WheelContact<T> wc =
           evaluate_wheel_contact(model.contacts[body.contact], m, side, model.speed_m_per_s);
       m.force_W += m.R_WI * wc.force_I;
-      m.moment_W += m.R_WI * wc.moment_I;
+      m.spinning_moment_W += m.R_WI * wc.moment_I;
       if constexpr (std::is_same_v<T, double>) {
         if (details) details->contacts.push_back({int(b), wc});
       }

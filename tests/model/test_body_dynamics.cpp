@@ -132,7 +132,7 @@ TEST(BodyDynamics, WheelsetPathEqualsGeneralPathForAxisymmetricBody) {
       BodyMotion<double> m;
       compute_body_motion(body, k, q, qd, m);
       m.force_W = force;
-      m.moment_W = moment;
+      m.spinning_moment_W = moment;  // on the rotating body in both paths
       acc[path] = body_accelerations(body, m);
     }
     EXPECT_LT((acc[0] - acc[1]).cwiseAbs().maxCoeff(), 1e-9 * acc[1].cwiseAbs().maxCoeff());
