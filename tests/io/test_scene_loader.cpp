@@ -445,7 +445,12 @@ TEST(SceneLoader, EveryCaseFileLoadsWithTheExpectedBodyCount) {
   const std::map<std::string, size_t> expected_body_counts = {
       {"thesis_bogie_tangent.toml", 3},   {"thesis_bogie_curve.toml", 3},
       {"thesis_vehicle_tangent.toml", 7}, {"thesis_vehicle_curve.toml", 7},
-      {"textbook_wheelset.toml", 1},      {"textbook_bogie.toml", 3}};
+      {"textbook_wheelset.toml", 1},      {"textbook_bogie.toml", 3},
+      {"extreme_stiff_contact.toml", 3},  {"extreme_low_speed.toml", 3},
+      {"extreme_high_speed.toml", 3},     {"extreme_tight_curve.toml", 3},
+      {"extreme_cant_deficiency.toml", 3}, {"extreme_cant_excess.toml", 3},
+      {"extreme_zero_damping.toml", 3},   {"extreme_lift_off.toml", 3},
+      {"extreme_near_critical.toml", 3},  {"extreme_conservative.toml", 3}};
   size_t files_seen = 0;
   for (const auto& entry : std::filesystem::directory_iterator(RAILSTAB_CASES_DIR)) {
     if (entry.path().extension() != ".toml") continue;
