@@ -3,6 +3,7 @@
 #include "cli/simulate_command.hpp"
 #include "cli/stability_commands.hpp"
 #include "cli/verify_command.hpp"
+#include "cli/work_precision_command.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -15,6 +16,7 @@ int main(int argc, char** argv) {
   railstab::register_simulate_command(app);
   railstab::register_stability_commands(app);
   railstab::register_verify_command(app);
+  railstab::register_work_precision_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

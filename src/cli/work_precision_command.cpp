@@ -1,0 +1,217 @@
+#include "cli/work_precision_command.hpp"
+
+#include "cli/scene_setup.hpp"
+#include "integrate/work_precision.hpp"
+#include "io/output_files.hpp"
+#include "report/time_plots.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <sstream>
+
+namespace railstab {
+
+namespace {
+
+struct WorkPrecisionArgs {
+  std::string scene;
+  SceneOverrides overrides;
+  std::string out_dir = "out";
+  double budget_s = 5.0;
+  std::vector<std::string> integrators;  // labels; empty: all
+  bool plots = true;
+};
+
+std::string csv_field(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string q = "\"";
+  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c == '\n' ? ' ' : c);
+  return q + "\"";
+}
+
+// Empty for a run without a result (gave up, failed, skipped).
+std::string number(double v) {
+  if (!std::isfinite(v)) return "";
+  std::ostringstream s;
+  s << std::setprecision(6) << v;
+  return s.str();
+}
+
+void write_csv(const std::string& path, const WorkPrecisionResult& r) {
+  write_file_atomically(path, [&](std::ostream& out) {
+    out << "integrator,rtol,atol,error,cpu_seconds,steps,rhs_evaluations,jacobians,status,"
+           "wall_seconds,error_coordinate,lateral_error\n";
+    for (const WorkPrecisionRun& run : r.runs) {
+      const bool done = std::isfinite(run.error);
+      out << run.label << ',' << number(run.rtol) << ',' << number(run.atol) << ','
+          << number(run.error) << ',' << (done ? number(run.cpu_seconds) : "") << ','
+          << run.stats.steps << ',' << run.stats.rhs_evaluations << ','
+          << run.stats.jacobian_evaluations << ',' << csv_field(run.status) << ','
+          << (done ? number(run.wall_seconds) : "") << ',' << run.error_coordinate << ','
+          << number(run.lateral_error) << '\n';
+    }
+  });
+}
+
+std::vector<std::string> labels_in_order(const WorkPrecisionResult& r) {
+  std::vector<std::string> labels;
+  for (const WorkPrecisionRun& run : r.runs)
+    if (labels.empty() || labels.back() != run.label) labels.push_back(run.label);
+  return labels;
+}
+
+// Gnuplot data: one block per integrator (finished runs only), then the plot.
+std::string write_plot(const std::string& prefix, const Model& model, double t_end,
+                       const WorkPrecisionResult& r) {
+  const std::string dat = prefix + "_work_precision.dat";
+  const std::string png = prefix + "_work_precision.png";
+  const std::string gp = prefix + "_work_precision.gp";
+  const std::vector<std::string> labels = labels_in_order(r);
+  std::vector<std::string> plotted;
+  write_file_atomically(dat, [&](std::ostream& out) {
+    out << "# cpu_seconds error rtol (one block per integrator)\n";
+    for (const std::string& label : labels) {
+      std::ostringstream block;
+      for (const WorkPrecisionRun& run : r.runs)
+        if (run.label == label && run.status == "ok" && run.error > 0.0)
+          block << number(run.cpu_seconds) << ' ' << number(run.error) << ' ' << number(run.rtol)
+                << '\n';
+      if (block.str().empty()) continue;
+      out << "# " << label << '\n' << block.str() << "\n\n";
+      plotted.push_back(label);
+    }
+  });
+  write_file_atomically(gp, [&](std::ostream& out) {
+    out << "set terminal pngcairo size 900,600 font 'Sans,10' noenhanced\n"
+        << "set output '" << png << "'\n"
+        << "set title '" << model.name << " at " << model.speed_m_per_s << " m/s, " << t_end
+        << " s: work-precision (reference " << integrator_name(r.reference.kind) << " rtol "
+        << number(r.reference.rtol) << ")'\n"
+        << "set logscale xy\nset grid\nset key outside right\n"
+        << "set xlabel 'CPU time [s]'\n"
+        << "set ylabel 'max position error [m, rad]'\n"
+        << "set format y '%.0e'\n";
+    out << "plot ";
+    for (size_t i = 0; i < plotted.size(); ++i)
+      out << (i ? ", \\\n     " : "") << "'" << dat << "' index " << i
+          << " using 1:2 with linespoints lw 1.5 pt " << (i + 4) << " title '" << plotted[i]
+          << "'";
+    if (plotted.empty()) out << "NaN title 'no finished run'";
+    out << "\n";
+  });
+  run_gnuplot(gp);
+  return png;
+}
+
+void write_markdown(const std::string& path, const Model& model, double t_end,
+                    const WorkPrecisionSettings& s, const WorkPrecisionResult& r) {
+  write_file_atomically(path, [&](std::ostream& out) {
+    const ReferenceSolution& ref = r.reference;
+    out << "# Work-precision: " << model.name << " at " << model.speed_m_per_s << " m/s, "
+        << t_end << " s\n\n"
+        << "- Error: max over the output times (every " << s.output_interval_s
+        << " s) and the body coordinates of |x - x_ref|, positions only (m, rad), wheelset spin "
+           "angles excluded.\n"
+        << "- Lateral error: the same over the lateral shifts and yaw angles only (the hunting "
+           "motion).\n"
+        << "- Work: process CPU seconds (std::clock) of the integration.\n"
+        << "- Tolerances: atol = rtol x " << s.absolute_tolerance_scale << " on every state.\n"
+        << "- Reference: " << integrator_name(ref.kind) << " at rtol " << number(ref.rtol)
+        << ", atol " << number(ref.atol) << " (CPU " << number(ref.cpu_seconds) << " s); "
+        << integrator_name(ref.check_kind) << " at rtol " << number(ref.check_rtol)
+        << " differs from it by " << number(ref.check_difference)
+        << ", an upper estimate of the reference's error. Errors below about that are not "
+           "resolved.\n"
+        << "- A run over " << s.cpu_budget_per_run_s
+        << " CPU s is abandoned (\"gave up\"); tighter tolerances of that integrator are then "
+           "skipped.\n\n";
+    out << "| integrator | rtol | atol | error | (where) | lateral error | CPU s | steps | rhs | "
+           "Jacobians | status |\n"
+        << "|---|---|---|---|---|---|---|---|---|---|---|\n";
+    for (const WorkPrecisionRun& run : r.runs) {
+      const bool done = std::isfinite(run.error);
+      out << "| " << run.label << " | " << number(run.rtol) << " | " << number(run.atol) << " | "
+          << (done ? number(run.error) : "-") << " | " << run.error_coordinate << " | "
+          << (done ? number(run.lateral_error) : "-") << " | "
+          << (done ? number(run.cpu_seconds) : "-")
+          << " | " << run.stats.steps << " | " << run.stats.rhs_evaluations << " | "
+          << run.stats.jacobian_evaluations << " | " << run.status << " |\n";
+    }
+    out << "\nCheapest run reaching an error bound, per integrator:\n\n"
+        << "| integrator | error <= 1e-4: rtol, CPU s | error <= 1e-6: rtol, CPU s |\n"
+        << "|---|---|---|\n";
+    for (const std::string& label : labels_in_order(r)) {
+      out << "| " << label;
+      for (double bound : {1e-4, 1e-6}) {
+        const WorkPrecisionRun* best = nullptr;
+        for (const WorkPrecisionRun& run : r.runs)
+          if (run.label == label && run.status == "ok" && run.error <= bound &&
+              (!best || run.cpu_seconds < best->cpu_seconds))
+            best = &run;
+        out << " | "
+            << (best ? number(best->rtol) + ", " + number(best->cpu_seconds) : std::string("-"));
+      }
+      out << " |\n";
+    }
+  });
+}
+
+std::vector<IntegratorVariant> selected_variants(const std::vector<std::string>& labels) {
+  if (labels.empty()) return default_variants();
+  std::vector<IntegratorVariant> chosen;
+  for (const std::string& l : labels) chosen.push_back(parse_integrator_variant(l));
+  return chosen;
+}
+
+void run_work_precision_command(const WorkPrecisionArgs& args) {
+  const PreparedScene scene = prepare_scene(args.scene, args.overrides);
+  const Model& model = scene.model;
+  WorkPrecisionSettings s;
+  s.t_end_s = scene.spec.simulation.t_end_s;
+  s.output_interval_s = scene.spec.simulation.output_interval_s;
+  s.cpu_budget_per_run_s = args.budget_s;
+  s.variants = selected_variants(args.integrators);
+  std::cerr << "work-precision: " << model.name << ", " << model.state_size() << " states, "
+            << model.speed_m_per_s << " m/s, " << s.t_end_s << " s\n";
+  const WorkPrecisionResult r = run_work_precision(
+      model, perturbed_initial_state(scene), s, [](const std::string& line) {
+        std::cerr << "  " << line << "\n";
+      });
+
+  const std::string prefix = (std::filesystem::path(args.out_dir) / model.name).string();
+  const std::string csv = prefix + "_work_precision.csv";
+  write_csv(csv, r);
+  std::cout << "wrote " << csv << "\n";
+  const std::string md = prefix + "_work_precision.md";
+  write_markdown(md, model, s.t_end_s, s, r);
+  std::cout << "wrote " << md << "\n";
+  if (args.plots) std::cout << "wrote " << write_plot(prefix, model, s.t_end_s, r) << "\n";
+}
+
+}  // namespace
+
+void register_work_precision_command(CLI::App& app) {
+  auto args = std::make_shared<WorkPrecisionArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "work-precision", "compare the integrators: error against CPU time over a range of tolerances");
+  cmd->add_option("scene", args->scene, "scene file (TOML)")->required()->check(CLI::ExistingFile);
+  cmd->add_option("--speed", args->overrides.speed_m_per_s, "speed V in m/s (overrides the scene)");
+  cmd->add_option("--t-end", args->overrides.t_end_s,
+                  "end time in s (overrides the scene; 5 s keeps the study near a minute)");
+  cmd->add_option("--out", args->out_dir, "output directory")->capture_default_str();
+  cmd->add_option("--budget", args->budget_s, "CPU seconds per run before giving up")
+      ->capture_default_str();
+  cmd->add_option("--integrators", args->integrators,
+                  "integrators to compare (default: cvode_bdf, cvode_bdf_q2, cvode_adams, "
+                  "arkode_erk, arkode_dirk, arkode_imex); _qN caps or sets the order, e.g. "
+                  "arkode_dirk_q3")
+      ->delimiter(',');
+  cmd->add_flag("!--no-plots", args->plots, "do not run gnuplot");
+  cmd->callback([args] { run_work_precision_command(*args); });
+}
+
+}  // namespace railstab

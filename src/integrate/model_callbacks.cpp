@@ -1,0 +1,138 @@
+#include "integrate/model_callbacks.hpp"
+
+#include "linear/jacobian.hpp"
+#include "model/equations_of_motion.hpp"
+
+#include <sunmatrix/sunmatrix_dense.h>
+
+#include <cstdio>
+#include <cstring>
+
+namespace railstab {
+
+ModelCallbackData::ModelCallbackData(const Model& m, const RootFunctionSet& r, double cpu_budget_s)
+    : model(&m), roots(&r), cpu_start_(std::clock()), cpu_budget_s_(cpu_budget_s) {}
+
+bool ModelCallbackData::within_budget() {
+  if (cpu_budget_s_ <= 0.0) return true;
+  // std::clock is a system call; every 16th evaluation is often enough
+  // (an evaluation takes microseconds, the budget is seconds).
+  if ((++calls_ & 15) != 0) return !budget_exhausted;
+  if (double(std::clock() - cpu_start_) / CLOCKS_PER_SEC > cpu_budget_s_) budget_exhausted = true;
+  return !budget_exhausted;
+}
+
+void prepare_imex_split(ModelCallbackData& data) {
+  data.implicit_part = std::make_unique<Model>(*data.model);
+  data.implicit_part->elements.clear();
+  data.implicit_part->gravity_m_per_s2 = 0.0;
+}
+
+Eigen::Map<Eigen::VectorXd> as_eigen(N_Vector v) {
+  return Eigen::Map<Eigen::VectorXd>(N_VGetArrayPointer(v), N_VGetLength(v));
+}
+
+namespace {
+
+// Runs `f`; turns an exception into SUNDIALS' "recoverable" code 1 (the
+// integrator retries with a smaller step) and keeps the first message.
+template <class F> int guarded(ModelCallbackData& data, F&& f) {
+  if (!data.within_budget()) {
+    if (data.error.empty()) data.error = "CPU time budget exhausted";
+    return -1;  // unrecoverable: stop now
+  }
+  try {
+    return f();
+  } catch (const std::exception& e) {
+    if (data.error.empty()) data.error = e.what();
+    return 1;
+  }
+}
+
+int dense_jacobian(const Model& model, double t, N_Vector y, SUNMatrix J) {
+  const long n = SUNDenseMatrix_Rows(J);
+  Eigen::Map<Eigen::MatrixXd> jac(SUNDenseMatrix_Data(J), n, n);  // column-major
+  jac = rhs_jacobian_ad(model, t, as_eigen(y));
+  return jac.allFinite() ? 0 : 1;
+}
+
+bool same_point(const ModelCallbackData& d, double t, N_Vector y) {
+  return d.cache_valid && d.cached_t == t && d.cached_x.size() == N_VGetLength(y) &&
+         std::memcmp(d.cached_x.data(), N_VGetArrayPointer(y),
+                     sizeof(double) * size_t(d.cached_x.size())) == 0;
+}
+
+}  // namespace
+
+int full_rhs_callback(double t, N_Vector y, N_Vector ydot, void* user) {
+  auto& data = *static_cast<ModelCallbackData*>(user);
+  return guarded(data, [&] {
+    as_eigen(ydot) = rhs(*data.model, t, as_eigen(y));
+    ++data.model_evaluations;
+    return 0;
+  });
+}
+
+int implicit_rhs_callback(double t, N_Vector y, N_Vector ydot, void* user) {
+  auto& data = *static_cast<ModelCallbackData*>(user);
+  return guarded(data, [&] {
+    data.cache_valid = false;
+    data.cached_fi = rhs(*data.implicit_part, t, as_eigen(y));
+    ++data.model_evaluations;
+    data.cached_x = as_eigen(y);
+    data.cached_t = t;
+    data.cache_valid = true;
+    as_eigen(ydot) = data.cached_fi;
+    return 0;
+  });
+}
+
+int explicit_rhs_callback(double t, N_Vector y, N_Vector ydot, void* user) {
+  auto& data = *static_cast<ModelCallbackData*>(user);
+  return guarded(data, [&] {
+    const Eigen::VectorXd f = rhs(*data.model, t, as_eigen(y));
+    ++data.model_evaluations;
+    if (same_point(data, t, y)) {
+      as_eigen(ydot) = f - data.cached_fi;
+    } else {
+      as_eigen(ydot) = f - rhs(*data.implicit_part, t, as_eigen(y));
+      ++data.model_evaluations;
+    }
+    return 0;
+  });
+}
+
+int full_jacobian_callback(double t, N_Vector y, N_Vector, SUNMatrix J, void* user, N_Vector,
+                           N_Vector, N_Vector) {
+  auto& data = *static_cast<ModelCallbackData*>(user);
+  return guarded(data, [&] { return dense_jacobian(*data.model, t, y, J); });
+}
+
+int implicit_jacobian_callback(double t, N_Vector y, N_Vector, SUNMatrix J, void* user, N_Vector,
+                               N_Vector, N_Vector) {
+  auto& data = *static_cast<ModelCallbackData*>(user);
+  return guarded(data, [&] { return dense_jacobian(*data.implicit_part, t, y, J); });
+}
+
+int root_callback(double t, N_Vector y, double* g, void* user) {
+  auto& data = *static_cast<ModelCallbackData*>(user);
+  try {
+    data.roots->evaluate(t, as_eigen(y), g);
+  } catch (const std::exception& e) {
+    if (data.error.empty()) data.error = std::string("root function: ") + e.what();
+    return -1;  // root functions have no recoverable failure in SUNDIALS
+  }
+  return 0;
+}
+
+void error_handler_callback(int error_code, const char* module, const char* function, char* msg,
+                            void* user) {
+  auto& data = *static_cast<ModelCallbackData*>(user);
+  if (error_code > 0) {  // a warning: the run goes on
+    std::fprintf(stderr, "[%s WARNING] %s: %s\n", module, function, msg);
+    return;
+  }
+  data.sundials_message = std::string(function) + ": " + msg;
+}
+
+}  // namespace railstab

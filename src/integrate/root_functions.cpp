@@ -1,0 +1,75 @@
+#include "integrate/root_functions.hpp"
+
+#include "contact/wheel_rail.hpp"
+#include "model/equations_of_motion.hpp"
+
+namespace railstab {
+
+RootFunctionSet::RootFunctionSet(const Model& model) : model_(&model) {
+  for (int b = 0; b < int(model.bodies.size()); ++b) {
+    const ModelBody& body = model.bodies[size_t(b)];
+    if (body.contact < 0) continue;
+    const int k = body.state_index[int(CoordinateIndex::y)];
+    if (k >= 0) {
+      RootFunction f;
+      f.kind = RootFunction::Kind::flange_clearance;
+      f.body = b;
+      f.state = k;
+      f.clearance_m = model.contacts[size_t(body.contact)].spec.flange_clearance_m;
+      functions_.push_back(f);
+    }
+    // A prescribed wheel load never lifts off.
+    if (model.contacts[size_t(body.contact)].spec.normal != NormalForceKind::hertz) continue;
+    for (int side : {1, -1}) {
+      RootFunction f;
+      f.kind = RootFunction::Kind::wheel_contact;
+      f.body = b;
+      f.side = side;
+      functions_.push_back(f);
+      has_wheels_ = true;
+    }
+  }
+  // The penetration does not depend on the force laws; with a prescribed zero
+  // load and no creep, evaluate_wheel_contact stops after the geometry.
+  geometry_only_ = model.contacts;
+  for (ModelContact& c : geometry_only_) {
+    c.spec.normal = NormalForceKind::prescribed;
+    c.spec.prescribed_wheel_load_N = 0.0;
+    c.spec.tangential = TangentialForceKind::none;
+  }
+}
+
+void RootFunctionSet::evaluate(double t_s, const Eigen::Ref<const Eigen::VectorXd>& x,
+                               double* g) const {
+  std::vector<BodyMotion<double>> motions;
+  std::vector<TrackFrameKinematics> frames;
+  if (has_wheels_) {
+    frames = track_frames_at(*model_, t_s);
+    compute_all_body_motions<double>(*model_, t_s, frames, x, motions);
+  }
+  for (size_t i = 0; i < functions_.size(); ++i) {
+    const RootFunction& f = functions_[i];
+    if (f.kind == RootFunction::Kind::flange_clearance) {
+      g[i] = f.clearance_m * f.clearance_m - x(f.state) * x(f.state);
+    } else {
+      const ModelContact& c = geometry_only_[size_t(model_->bodies[size_t(f.body)].contact)];
+      const double penetration =
+          evaluate_wheel_contact(c, motions[size_t(f.body)], f.side, model_->speed_m_per_s)
+              .penetration_m;
+      // The penetration is a difference of two radii near 0.45 m, quantised
+      // to ~1e-16 m, so it is exactly zero on a short plateau around a
+      // crossing; SUNDIALS rejects a root function that stays exactly zero
+      // ("root found at and very near t"). Zero means no force in the model
+      // (contact iff penetration > 0), so it counts as a negative far below
+      // the rounding quantum (not a denormal: the root finder divides by g).
+      g[i] = penetration != 0.0 ? penetration : -1e-20;
+    }
+  }
+}
+
+std::string RootFunctionSet::wheel_name(int i) const {
+  const RootFunction& f = functions_[size_t(i)];
+  return model_->bodies[size_t(f.body)].name + (f.side > 0 ? " left wheel" : " right wheel");
+}
+
+}  // namespace railstab
