@@ -91,7 +91,7 @@ void run_verify(const VerifyArgs& a) {
   write_verification_json(json, s.model, r);
   const std::string png = plot_fit(r, prefix, s.model);
   std::cout << std::setprecision(6) << s.model.name << " at " << r.speed_m_per_s
-            << " m/s, least stable mode: " << r.mode_name << " (signal " << r.signal << ")\n"
+            << " m/s, least stable lateral mode: " << r.mode_name << " (signal " << r.signal << ")\n"
             << "                 real part [1/s]   frequency [Hz]\n"
             << "  eigenvalue     " << std::setw(15) << r.eigen_real_per_s << std::setw(17)
             << r.eigen_frequency_hz << "\n"
@@ -119,7 +119,7 @@ void register_verify_command(CLI::App& app) {
   cmd->add_option("--arc-length", a->overrides.reference_arc_length_m,
                   "arc length (m) of the reference point at t = 0");
   cmd->add_option("--amplitude", a->options.amplitude_m,
-                  "initial lateral amplitude (m) of the wheelset that moves most")
+                  "initial lateral amplitude (m) of the body that moves most laterally")
       ->capture_default_str();
   cmd->add_option("--json", a->json, "JSON output (default OUT/<scene>_verify_<V>mps.json)");
   cmd->add_option("--out", a->out_dir, "output directory")->capture_default_str();

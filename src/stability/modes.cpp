@@ -41,10 +41,13 @@ std::vector<ModeReport> describe_modes(const Model& model, const LinearModel& li
       const double inertia = c < 3 ? body.mass_kg : body.inertia_kg_m2(c - 3);
       const double e = inertia * std::norm(p.vector(Eigen::Index(i)));
       total += e;
+      if (c == 1 || c == 3 || c == 5) m.lateral_share += e;
       parts.push_back({body.name, c, e});
     }
-    if (total > 0.0)
+    if (total > 0.0) {
       for (Participation& q : parts) q.share /= total;
+      m.lateral_share /= total;
+    }
     std::sort(parts.begin(), parts.end(),
               [](const Participation& a, const Participation& b) { return a.share > b.share; });
     if (parts.size() > 6) parts.resize(6);
@@ -76,6 +79,19 @@ int least_stable_mode(const std::vector<ModeReport>& modes, double max_frequency
     if (a > b || (a == b && modes[i].eigenvalue.imag() > modes[best].eigenvalue.imag())) best = i;
   }
   return best;
+}
+
+int least_stable_lateral_mode(const std::vector<ModeReport>& modes, double max_frequency_hz,
+                              double min_lateral_share) {
+  std::vector<ModeReport> candidates;
+  std::vector<int> index;
+  for (int i = 0; i < int(modes.size()); ++i)
+    if (modes[i].frequency_hz > 0.0 && modes[i].lateral_share >= min_lateral_share) {
+      candidates.push_back(modes[i]);
+      index.push_back(i);
+    }
+  const int best = least_stable_mode(candidates, max_frequency_hz);
+  return best < 0 ? -1 : index[size_t(best)];
 }
 
 }  // namespace railstab

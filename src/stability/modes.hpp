@@ -25,7 +25,11 @@ struct ModeReport {
   double residual = 0.0;  // eigenpair residual (scale free)
   bool neutral = false;   // |lambda| at round-off level: rigid-body / cyclic
   std::string name;       // e.g. "wheelset1 lateral/yaw"
-  std::vector<Participation> participation;  // largest first
+  std::vector<Participation> participation;  // largest first (at most 6)
+  // Share of the kinetic energy in the lateral plane (lateral, roll and yaw
+  // of every body): near 1 for hunting and sway, near 0 for bounce, pitch
+  // and longitudinal modes.
+  double lateral_share = 0.0;
   Eigen::VectorXcd vector;  // eigenvector on the linear model's kept states
 };
 
@@ -41,6 +45,11 @@ double neutral_threshold(const Eigen::MatrixXd& A);
 // Index of the least stable non-neutral mode at or below max_frequency_hz
 // (largest real part; among equal real parts the oscillatory one), or -1.
 int least_stable_mode(const std::vector<ModeReport>& modes, double max_frequency_hz);
+
+// As least_stable_mode, among the oscillatory modes with lateral_share of at
+// least min_lateral_share (the candidates for hunting), or -1.
+int least_stable_lateral_mode(const std::vector<ModeReport>& modes, double max_frequency_hz,
+                              double min_lateral_share = 0.5);
 
 std::string coordinate_word(int coordinate);
 

@@ -337,6 +337,20 @@ Track::SegmentStart Track::state_at(int segment, double u_m) const {
           std::lerp(start.cant_m, law.end_cant_m, fraction)};
 }
 
+double Track::uniform_stretch_end_m(double s_m) const {
+  auto uniform = [&](int i) {
+    return laws_[size_t(i)].kind != TrackSegmentKind::clothoid &&
+           laws_[size_t(i)].end_cant_m == starts_[size_t(i)].cant_m;
+  };
+  int i = segment_containing(s_m);
+  if (!uniform(i)) return s_m;
+  while (i + 1 < int(laws_.size()) && uniform(i + 1) &&
+         starts_[size_t(i + 1)].curvature_per_m == starts_[size_t(i)].curvature_per_m &&
+         starts_[size_t(i + 1)].cant_m == starts_[size_t(i)].cant_m)
+    ++i;
+  return starts_[size_t(i)].s_m + laws_[size_t(i)].length_m;
+}
+
 TrackGeometryPoint Track::geometry_at(double s_m) const {
   if (!(s_m >= 0.0 && s_m <= total_length_m_))
     throw std::out_of_range(out_of_track_message(s_m, total_length_m_));

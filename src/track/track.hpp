@@ -48,6 +48,11 @@ class Track {
   TrackFrameKinematics frame_at(double s_m, double speed_m_per_s) const;
 
   double length_m() const { return total_length_m_; }
+  // Where the constant-curvature, constant-cant stretch through s_m ends
+  // (consecutive tangents or arcs with equal curvature and cant merge): the
+  // limit of runs that must stay at one steady rolling/curving state. s_m
+  // itself inside a clothoid or a cant ramp.
+  double uniform_stretch_end_m(double s_m) const;
   const TrackSpec& spec() const { return spec_; }
 
  private:

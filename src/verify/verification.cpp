@@ -3,6 +3,8 @@
 #include "stability/speed_analysis.hpp"
 
 #include <cmath>
+#include <limits>
+#include <sstream>
 #include <numbers>
 #include <stdexcept>
 
@@ -11,8 +13,10 @@ namespace railstab {
 namespace {
 
 // Perturbation of the full state along the real part of a mode, scaled so
-// the largest wheelset lateral displacement is `amplitude`; also returns the
-// lateral state that moves most (the signal to fit).
+// the largest lateral displacement of any body is `amplitude`; also returns
+// that lateral state (the signal to fit). Scaling by the wheelsets alone
+// would blow up a car-body sway mode, in which the wheelsets hardly move,
+// to centimetres of car-body motion.
 Eigen::VectorXd mode_perturbation(const Model& model, const LinearModel& lin,
                                   const Eigen::VectorXcd& v, double amplitude, int& signal_state) {
   Eigen::VectorXd dx = Eigen::VectorXd::Zero(model.state_size());
@@ -22,14 +26,14 @@ Eigen::VectorXd mode_perturbation(const Model& model, const LinearModel& lin,
   for (int k = 0; k < model.n_coordinates; ++k) {
     const auto [b, c] = model.coordinate_of_state[k];
     if (c != int(CoordinateIndex::y)) continue;
-    const double weight = model.bodies[b].contact >= 0 ? std::abs(dx(k)) : 0.0;
+    const double weight = std::abs(dx(k));
     if (weight > largest) {
       largest = weight;
       signal_state = k;
     }
   }
   if (signal_state < 0 || largest == 0.0)
-    throw std::runtime_error("verify: the least stable mode moves no wheelset laterally");
+    throw std::runtime_error("verify: the chosen mode moves no body laterally");
   return dx * (amplitude / largest);
 }
 
@@ -43,11 +47,15 @@ VerificationResult verify_least_stable_mode(const Model& model, const Eigen::Vec
   so.max_frequency_hz = options.hunting_band_hz;
   SpeedStability stability(model, equilibrium, so);
   const StabilityPoint point = stability.at(model.speed_m_per_s);
-  if (point.least_stable < 0) throw std::runtime_error("verify: no mode in the hunting band");
-  const ModeReport& mode = point.modes[point.least_stable];
-  if (mode.frequency_hz <= 0.0)
-    throw std::runtime_error("verify: the least stable mode (" + mode.name +
-                             ") does not oscillate; nothing to fit a frequency to");
+  // Hunting is a lateral mode: a lightly damped longitudinal or vertical
+  // mode (e.g. bogie longitudinal on the thesis vehicle at 100 m/s) may be
+  // less damped but moves no wheelset laterally, so it cannot be fitted on
+  // a lateral signal.
+  const int chosen = least_stable_lateral_mode(point.modes, options.hunting_band_hz);
+  if (chosen < 0)
+    throw std::runtime_error("verify: no oscillatory lateral mode (lateral share >= 0.5) at or below " +
+                             std::to_string(options.hunting_band_hz) + " Hz; nothing to fit");
+  const ModeReport& mode = point.modes[size_t(chosen)];
   out.eigenvalue = mode.eigenvalue;
   out.mode_name = mode.name;
   out.eigen_real_per_s = mode.eigenvalue.real();
@@ -70,6 +78,28 @@ VerificationResult verify_least_stable_mode(const Model& model, const Eigen::Vec
   if (mode.eigenvalue.real() > 0.0)
     t_end = std::min(t_end, options.settle_periods * period +
                                 std::log(options.max_growth) / mode.eigenvalue.real());
+  // The eigenvalue belongs to one steady state: the run must stay on the
+  // uniform stretch of track (tangent or arc at constant cant) it starts on.
+  double track_limit_s = std::numeric_limits<double>::infinity();
+  std::string first_out;
+  for (int b = 0; b < int(model.bodies.size()); ++b) {
+    const double s0 = model.arc_length_of(b, 0.0);
+    const double t_b = (model.track.uniform_stretch_end_m(s0) - s0) / model.speed_m_per_s;
+    if (t_b < track_limit_s) track_limit_s = t_b, first_out = model.bodies[size_t(b)].name;
+  }
+  if (track_limit_s < t_end) {
+    const double needed = (options.settle_periods + 3.0) * period;
+    if (track_limit_s < needed) {
+      std::ostringstream msg;
+      msg << "verify: " << first_out << " leaves the uniform stretch of track (tangent or arc at "
+          << "constant cant) it starts on after " << track_limit_s << " s at "
+          << model.speed_m_per_s << " m/s, short of the " << needed
+          << " s needed to fit the mode; start inside a longer tangent or arc (--arc-length)";
+      throw std::runtime_error(msg.str());
+    }
+    t_end = track_limit_s;
+    out.track_limited = true;
+  }
   out.window_start_s = options.settle_periods * period;
   out.window_end_s = t_end;
 

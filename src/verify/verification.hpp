@@ -15,7 +15,7 @@
 namespace railstab {
 
 struct VerificationOptions {
-  double amplitude_m = 1e-4;    // largest lateral displacement of a wheelset at t = 0
+  double amplitude_m = 1e-4;    // largest lateral displacement of any body at t = 0
   double periods = 15.0;        // simulated length in periods of the mode
   double settle_periods = 2.0;  // skipped before the fit window
   double max_t_end_s = 40.0;
@@ -31,6 +31,8 @@ struct VerificationResult {
   std::string mode_name;
   std::string signal;  // state whose response is fitted, e.g. "wheelset1.y_m"
   double window_start_s = 0.0, window_end_s = 0.0;
+  // The window was cut short where the first body leaves the uniform track.
+  bool track_limited = false;
   DampedSinusoid fit;
   double eigen_real_per_s = 0.0, eigen_frequency_hz = 0.0;
   double fitted_real_per_s = 0.0, fitted_frequency_hz = 0.0;

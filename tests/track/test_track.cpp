@@ -280,6 +280,24 @@ TEST(TrackGeometry, SeedCantRampAndRollSign) {
 
 // The arc's end_curvature_per_m is not used (arc curvature = start), so scene
 // builders may leave it 0.
+// Uniform stretches end at the next clothoid or cant ramp; equal tangents
+// and equal arcs merge; inside a clothoid the stretch is empty.
+TEST(TrackGeometry, UniformStretchEnds) {
+  const Track seed(seed_track());
+  EXPECT_EQ(seed.uniform_stretch_end_m(100.0), 1000.0);
+  EXPECT_EQ(seed.uniform_stretch_end_m(1100.0), 1100.0);
+  EXPECT_EQ(seed.uniform_stretch_end_m(2000.0), 4200.0);
+  TrackSpec spec;
+  spec.segments = {{Kind::tangent, 100.0, 0.0, 0.0},
+                   {Kind::tangent, 50.0, 0.0, 0.0},
+                   {Kind::tangent, 30.0, 0.0, 0.02},  // cant ramp
+                   {Kind::tangent, 40.0, 0.0, 0.02}};
+  const Track t(spec);
+  EXPECT_EQ(t.uniform_stretch_end_m(10.0), 150.0);
+  EXPECT_EQ(t.uniform_stretch_end_m(160.0), 160.0);
+  EXPECT_EQ(t.uniform_stretch_end_m(190.0), 220.0);
+}
+
 TEST(TrackGeometry, ArcIgnoresEndCurvatureField) {
   TrackSpec with_zero = seed_track();
   with_zero.segments[2].end_curvature_per_m = 0.0;
