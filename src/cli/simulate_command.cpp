@@ -1,7 +1,10 @@
 #include "cli/simulate_command.hpp"
 
 #include "cli/scene_setup.hpp"
+#include "integrate/error_estimate.hpp"
 #include "integrate/integrator.hpp"
+#include "integrate/work_precision.hpp"
+#include "io/json_writer.hpp"
 #include "io/output_files.hpp"
 #include "model/equations_of_motion.hpp"
 #include "report/time_plots.hpp"
@@ -10,6 +13,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 namespace railstab {
 
@@ -22,7 +26,62 @@ struct SimulateArgs {
   std::string csv;
   std::string out_dir = "out";
   bool plots = true;
+  std::string integrator;  // label, e.g. "cvode_bdf_q2"; empty: the scene's
+  std::optional<double> rtol, atol;
+  bool estimate_error = true;
 };
+
+IntegrationOptions integration_options(const SimulateArgs& args, const SimulationSpec& sim) {
+  IntegrationOptions opt = integration_options_for(sim);
+  if (!args.integrator.empty()) {
+    const IntegratorVariant v = parse_integrator_variant(args.integrator);
+    opt.kind = v.kind;
+    opt.order = v.order;
+  }
+  opt.relative_tolerance = args.rtol.value_or(sim.relative_tolerance);
+  opt.absolute_tolerance = args.atol.value_or(sim.absolute_tolerance);
+  return opt;
+}
+
+void write_run_json(const std::string& path, const Model& model, const IntegrationOptions& opt,
+                    const Trajectory& traj, const std::optional<ErrorEstimate>& error) {
+  write_file_atomically(path, [&](std::ostream& out) {
+    JsonWriter j(out);
+    const double simulated = traj.times_s.back() - opt.t_start_s;
+    j.begin_object()
+        .field("scene", model.name)
+        .field("speed_m_s", model.speed_m_per_s)
+        .field("states", model.state_size())
+        .field("integrator", IntegratorVariant{opt.kind, opt.order}.label())
+        .field("relative_tolerance", opt.relative_tolerance)
+        .field("absolute_tolerance", opt.absolute_tolerance)
+        .field("simulated_s", simulated)
+        .field("wall_seconds", traj.stats.wall_seconds)
+        .field("cpu_seconds", traj.stats.cpu_seconds)
+        .field("real_time_factor", simulated / traj.stats.wall_seconds)
+        .field("steps", int(traj.stats.steps))
+        .field("rhs_evaluations", int(traj.stats.rhs_evaluations))
+        .field("jacobian_evaluations", int(traj.stats.jacobian_evaluations))
+        .field("stopped_early", traj.stopped_early);
+    j.key("contact_events").begin_array();
+    for (const ContactEvent& e : traj.events) j.value(e.description);
+    j.end_array();
+    j.key("error_estimate");
+    if (!error) {
+      j.null();
+    } else {
+      j.begin_object()
+          .field("method", "difference to the same run at " + std::to_string(int(error->tightening)) +
+                               "x tighter tolerances")
+          .field("position_error", error->position_error)
+          .field("position_error_at", error->where)
+          .field("lateral_error", error->lateral_error)
+          .field("reference_wall_seconds", error->wall_seconds)
+          .end_object();
+    }
+    j.end_object();
+  });
+}
 
 void run_simulate(const SimulateArgs& args) {
   PreparedScene scene = prepare_scene(args.scene, args.overrides);
@@ -32,17 +91,22 @@ void run_simulate(const SimulateArgs& args) {
             << "static equilibrium: " << scene.equilibrium.iterations
             << " Newton iterations, residual " << scene.equilibrium.max_acceleration << "\n";
 
-  IntegrationOptions opt;
-  opt.t_end_s = scene.spec.simulation.t_end_s;
-  opt.output_interval_s = scene.spec.simulation.output_interval_s;
-  opt.relative_tolerance = scene.spec.simulation.relative_tolerance;
-  opt.absolute_tolerance = scene.spec.simulation.absolute_tolerance;
+  IntegrationOptions opt = integration_options(args, scene.spec.simulation);
   opt.progress = [&](double t) {
     std::cerr << "  t = " << t << " / " << opt.t_end_s << " s\n";
   };
-  const Trajectory traj = integrate(model, perturbed_initial_state(scene), opt);
+  const Eigen::VectorXd x0 = perturbed_initial_state(scene);
+  const Trajectory traj = integrate(model, x0, opt);
   if (!traj.stopped_early.empty())
     std::cout << "stopped early: " << traj.stopped_early << "\n";
+  if (!traj.events.empty())
+    std::cout << traj.events.size() << " wheel-rail contact losses/regains, first: "
+              << traj.events.front().description << "\n";
+  std::optional<ErrorEstimate> error;
+  if (args.estimate_error) {
+    std::cerr << "error estimate: the same run at 100x tighter tolerances\n";
+    error = estimate_integration_error(model, x0, opt, traj);
+  }
 
   const std::string base =
       (std::filesystem::path(args.out_dir) / (model.name + "_" +
@@ -58,12 +122,22 @@ void run_simulate(const SimulateArgs& args) {
     for (const std::string& png : plot_time_histories(model, csv, roll_csv, base))
       std::cout << "wrote " << png << "\n";
   const double simulated = traj.times_s.back() - opt.t_start_s;
-  std::cout << "integrator " << integrator_name(opt.kind) << " rtol " << opt.relative_tolerance
+  const std::string json = base + "_run.json";
+  write_run_json(json, model, opt, traj, error);
+  std::cout << "wrote " << json << "\n";
+  std::cout << "integrator " << IntegratorVariant{opt.kind, opt.order}.label() << " rtol " << opt.relative_tolerance
             << " atol " << opt.absolute_tolerance << ": " << traj.stats.steps << " steps, "
             << traj.stats.rhs_evaluations << " rhs evaluations, "
             << traj.stats.jacobian_evaluations << " AD Jacobians, wall "
             << traj.stats.wall_seconds << " s for " << simulated << " s simulated (real-time factor "
             << simulated / traj.stats.wall_seconds << ")\n";
+  if (error)
+    std::cout << "estimated error: " << error->position_error << " (m or rad, at " << error->where
+              << "), lateral shift/yaw " << error->lateral_error
+              << ", from the same run at 100x tighter tolerances (wall " << error->wall_seconds
+              << " s)\n";
+  else
+    std::cout << "error not estimated (--no-error-estimate)\n";
 }
 
 }  // namespace
@@ -76,6 +150,16 @@ void register_simulate_command(CLI::App& app) {
   cmd->add_option("--t-end", args->overrides.t_end_s, "end time in s (overrides the scene)");
   cmd->add_option("--csv", args->csv, "CSV output file (default OUT/<scene>_<V>mps.csv)");
   cmd->add_option("--out", args->out_dir, "output directory")->capture_default_str();
+  cmd->add_option("--integrator", args->integrator,
+                  "cvode_bdf, cvode_adams, arkode_erk, arkode_dirk or arkode_imex; _qN sets the "
+                  "(maximum) order, e.g. cvode_bdf_q2 (default: the scene's [simulation] "
+                  "integrator, arkode_dirk)");
+  cmd->add_option("--rtol", args->rtol, "relative tolerance (default: the scene's, 1e-3)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--atol", args->atol, "absolute tolerance (default: the scene's, 1e-6)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_flag("!--no-error-estimate", args->estimate_error,
+                "skip the second run at 100x tighter tolerances that estimates the error");
   cmd->add_flag("!--no-plots", args->plots, "do not run gnuplot");
   cmd->callback([args] { run_simulate(*args); });
 }

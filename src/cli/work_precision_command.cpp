@@ -23,6 +23,7 @@ struct WorkPrecisionArgs {
   std::string out_dir = "out";
   double budget_s = 5.0;
   std::vector<std::string> integrators;  // labels; empty: all
+  std::vector<double> rtols;             // empty: the default ladder
   bool plots = true;
 };
 
@@ -175,6 +176,7 @@ void run_work_precision_command(const WorkPrecisionArgs& args) {
   s.output_interval_s = scene.spec.simulation.output_interval_s;
   s.cpu_budget_per_run_s = args.budget_s;
   s.variants = selected_variants(args.integrators);
+  if (!args.rtols.empty()) s.relative_tolerances = args.rtols;
   std::cerr << "work-precision: " << model.name << ", " << model.state_size() << " states, "
             << model.speed_m_per_s << " m/s, " << s.t_end_s << " s\n";
   const WorkPrecisionResult r = run_work_precision(
@@ -210,6 +212,10 @@ void register_work_precision_command(CLI::App& app) {
                   "arkode_erk, arkode_dirk, arkode_imex); _qN caps or sets the order, e.g. "
                   "arkode_dirk_q3")
       ->delimiter(',');
+  cmd->add_option("--rtols", args->rtols,
+                  "relative tolerances, loose to tight (default 1e-3,...,1e-8; atol = 1e-3 rtol)")
+      ->delimiter(',')
+      ->check(CLI::PositiveNumber);
   cmd->add_flag("!--no-plots", args->plots, "do not run gnuplot");
   cmd->callback([args] { run_work_precision_command(*args); });
 }

@@ -97,6 +97,17 @@ std::string handle_roots(const Model& model, const RootFunctionSet& roots,
 
 }  // namespace
 
+IntegrationOptions integration_options_for(const SimulationSpec& simulation) {
+  IntegrationOptions o;
+  o.kind = simulation.integrator;
+  o.order = simulation.integrator_order;
+  o.t_end_s = simulation.t_end_s;
+  o.output_interval_s = simulation.output_interval_s;
+  o.relative_tolerance = simulation.relative_tolerance;
+  o.absolute_tolerance = simulation.absolute_tolerance;
+  return o;
+}
+
 Trajectory integrate(const Model& model, const Eigen::VectorXd& x0,
                      const IntegrationOptions& options) {
   const auto wall_start = std::chrono::steady_clock::now();

@@ -20,6 +20,7 @@
 // some nearly undamped (zeta ~ 0.008), and creep damping f/(V m) giving real
 // eigenvalues to -3e3...-4e3 1/s on the thesis vehicles at 20 m/s.
 #include "model/model.hpp"
+#include "scene/integrator_kind.hpp"
 
 #include <Eigen/Dense>
 
@@ -29,8 +30,6 @@
 #include <vector>
 
 namespace railstab {
-
-enum class IntegratorKind { cvode_bdf, cvode_adams, arkode_erk, arkode_dirk, arkode_imex };
 
 struct IntegrationOptions {
   IntegratorKind kind = IntegratorKind::cvode_bdf;
@@ -100,14 +99,14 @@ struct IntegrationGaveUp : std::runtime_error {
   IntegrationStats stats;
 };
 
+// The scene's [simulation] choices: integrator, order, tolerances, end time
+// and output interval.
+IntegrationOptions integration_options_for(const SimulationSpec& simulation);
+
 // Throws std::runtime_error with SUNDIALS' reason and the time reached
 // (IntegrationGaveUp for work limits).
 Trajectory integrate(const Model& model, const Eigen::VectorXd& x0,
                      const IntegrationOptions& options);
 
-std::string integrator_name(IntegratorKind kind);
-// Inverse of integrator_name; throws std::invalid_argument listing the names.
-IntegratorKind parse_integrator_kind(const std::string& name);
-const std::vector<IntegratorKind>& all_integrator_kinds();
 
 }  // namespace railstab

@@ -10,7 +10,8 @@
 //   [contacts.<name>]   geometry, normal, tangential (+ their numbers)
 //   [[bodies]]          name, type, mass_kg, inertia_kg_m2, position_m, ...
 //   [[elements]]        name, type, body1, body2, points, stiffness, damping, ...
-//   [simulation]        optional: t_end_s, output_interval_s, tolerances
+//   [simulation]        optional: t_end_s, output_interval_s, integrator, integrator_order,
+//                       relative_tolerance, absolute_tolerance
 //
 // How this file is organised:
 //   1. message helpers        every error reads "<file>: <key path>: expected ..., got ..."
@@ -729,11 +730,31 @@ ElementList read_elements(const TableReader& top) {
 }
 
 // --- [simulation] ------------------------------------------------------------------
+const Choices<IntegratorKind>& integrator_choices() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> n;
+    for (IntegratorKind k : all_integrator_kinds()) n.push_back(integrator_name(k));
+    return n;
+  }();
+  static const Choices<IntegratorKind> choices = [] {
+    Choices<IntegratorKind> c;
+    for (size_t i = 0; i < names.size(); ++i) c.emplace_back(names[i], all_integrator_kinds()[i]);
+    return c;
+  }();
+  return choices;
+}
+
 SimulationSpec read_simulation(const std::optional<TableReader>& simulation) {
   SimulationSpec spec;
   if (!simulation) return spec;
   spec.t_end_s = simulation->number_or("t_end_s", "s", spec.t_end_s);
   spec.output_interval_s = simulation->number_or("output_interval_s", "s", spec.output_interval_s);
+  spec.integrator = simulation->choice_or("integrator", integrator_choices(), spec.integrator);
+  const double order = simulation->number_or("integrator_order", "", spec.integrator_order);
+  if (!(order == std::floor(order) && order >= 0.0 && order <= 12.0))
+    simulation->fail("integrator_order", "an integer 0-12 (0: the method's default)",
+                     format_number(order));
+  spec.integrator_order = int(order);
   spec.relative_tolerance =
       simulation->number_or("relative_tolerance", "", spec.relative_tolerance);
   spec.absolute_tolerance =
@@ -1044,7 +1065,8 @@ SceneSpec parse_scene(const std::string& toml_text, const std::string& source_na
   ElementList elements = read_elements(top);
   scene.elements = std::move(elements.specs);
   scene.simulation = read_simulation(top.optional_table(
-      "simulation", {"t_end_s", "output_interval_s", "relative_tolerance", "absolute_tolerance"}));
+      "simulation", {"t_end_s", "output_interval_s", "integrator", "integrator_order",
+                     "relative_tolerance", "absolute_tolerance"}));
   SceneChecker(scene, std::move(elements.file_paths)).check_all();
   return scene;
 }

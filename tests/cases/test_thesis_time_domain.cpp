@@ -14,7 +14,8 @@ std::string case_path(const std::string& name) {
 }
 
 Trajectory run(const PreparedScene& scene, double t_end) {
-  IntegrationOptions opt;
+  // The scene's integrator and tolerances: the defaults users run.
+  IntegrationOptions opt = integration_options_for(scene.spec.simulation);
   opt.t_end_s = t_end;
   opt.output_interval_s = 0.01;
   return integrate(scene.model, perturbed_initial_state(scene), opt);

@@ -117,11 +117,8 @@ RunOutcome run_scene(const PreparedScene& scene, IntegrationOptions opt) {
 }
 
 IntegrationOptions options_for(const PreparedScene& scene, double t_end_s) {
-  IntegrationOptions opt;
+  IntegrationOptions opt = integration_options_for(scene.spec.simulation);
   opt.t_end_s = t_end_s;
-  opt.output_interval_s = scene.spec.simulation.output_interval_s;
-  opt.relative_tolerance = scene.spec.simulation.relative_tolerance;
-  opt.absolute_tolerance = scene.spec.simulation.absolute_tolerance;
   return opt;
 }
 

@@ -435,6 +435,20 @@ TEST(SceneLoader, SimulationTimesMustBePositive) {
                      {"simulation.t_end_s", "expected a positive number (s)", "got 0"});
 }
 
+TEST(SceneLoader, IntegratorChoiceAndOrder) {
+  const SceneSpec scene = parse_scene(
+      minimal_with("t_end_s = 5.0", "t_end_s = 5.0\nintegrator = \"cvode_bdf\"\nintegrator_order = 2"),
+      kSource);
+  EXPECT_EQ(scene.simulation.integrator, IntegratorKind::cvode_bdf);
+  EXPECT_EQ(scene.simulation.integrator_order, 2);
+  EXPECT_EQ(parse_scene(kMinimalScene, kSource).simulation.integrator,
+            IntegratorKind::arkode_dirk);  // the default
+  expect_scene_error(minimal_with("t_end_s = 5.0", "t_end_s = 5.0\nintegrator = \"cvode_bfd\""),
+                     {"simulation.integrator", "one of", "'cvode_bdf'", "got 'cvode_bfd'"});
+  expect_scene_error(minimal_with("t_end_s = 5.0", "t_end_s = 5.0\nintegrator_order = 2.5"),
+                     {"simulation.integrator_order", "an integer 0-12", "got 2.5"});
+}
+
 TEST(SceneLoader, MissingFileIsReported) {
   EXPECT_THROW(load_scene_file("/nonexistent/scene.toml"), SceneError);
 }

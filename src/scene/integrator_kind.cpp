@@ -1,4 +1,6 @@
-#include "integrate/integrator.hpp"
+#include "scene/integrator_kind.hpp"
+
+#include <stdexcept>
 
 namespace railstab {
 
