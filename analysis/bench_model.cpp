@@ -71,16 +71,15 @@ void bench_scene(const std::string& path) {
               r.evaluations, r.critical_speed_found ? "" : "none; ",
               r.critical_speed_found ? r.critical_speed_m_per_s : 0.0);
 
-  IntegrationOptions opt;
+  // The scene's integrator and tolerances (the default users get).
+  IntegrationOptions opt = integration_options_for(scene.spec.simulation);
   opt.t_end_s = 20.0;
   opt.output_interval_s = 0.01;
-  opt.relative_tolerance = scene.spec.simulation.relative_tolerance;
-  opt.absolute_tolerance = scene.spec.simulation.absolute_tolerance;
   const Trajectory traj = integrate(model, x, opt);
   const double simulated = traj.times_s.back();
-  std::printf("  20 s run (CVODE BDF, rtol %.0e): wall %.3f s, real-time factor %.1f, "
+  std::printf("  20 s run (%s, rtol %.0e): wall %.3f s, real-time factor %.1f, "
               "%ld steps, %ld rhs, %ld Jacobians%s\n",
-              opt.relative_tolerance, traj.stats.wall_seconds, simulated / traj.stats.wall_seconds,
+              integrator_name(opt.kind).c_str(), opt.relative_tolerance, traj.stats.wall_seconds, simulated / traj.stats.wall_seconds,
               traj.stats.steps, traj.stats.rhs_evaluations, traj.stats.jacobian_evaluations,
               traj.stopped_early.empty() ? "" : " (stopped early)");
 }

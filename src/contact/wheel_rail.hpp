@@ -33,6 +33,7 @@ template <class T> struct WheelContact {
   int side = 1;           // +1 left (+y), -1 right
   T penetration_m{};      // delta (<= 0: no contact, zero force)
   T normal_force_N{};
+  T elastic_normal_force_N{};  // the Hertz (or prescribed) part, without damping
   T rolling_radius_m{};
   T semi_axis_a_m{}, semi_axis_b_m{};
   T creep_x{}, creep_y{}, creep_spin_per_m{};
@@ -95,21 +96,38 @@ WheelContact<T> evaluate_wheel_contact(const ModelContact& contact, const BodyMo
     shape = hertz_shape(A, T(contact.rail_curvature_B_per_m),
                         contact.materials.effective_modulus_Pa);
   }
+  // Velocity of the wheel material at P (the rail is at rest): the slip
+  // velocity of the creepages, and along -nu the penetration rate.
+  const auto slip_velocity = [&] {
+    const Vec3<T> w_T = to_scalar<T>(ws.track->w_WT_T);
+    const Vec3<T> v_T = to_scalar<T>(ws.track->v_WT_T);
+    const Vec3<T> v_centre_I = R_IT * (v_T + w_T.cross(w) + ws.qd.template head<3>());
+    return Vec3<T>(v_centre_I + ws.w_B_I.cross(out.point_I));
+  };
+  // The elastic (Hertz) load sizes the contact ellipse; damping adds to the
+  // force only.
+  T& elastic_N = out.elastic_normal_force_N;
+  elastic_N = T(0);  // (an AutoDiffScalar's T{} leaves the value unset)
+  out.normal_force_N = T(0);
   if (spec.normal == NormalForceKind::prescribed) {
-    out.normal_force_N = T(spec.prescribed_wheel_load_N);
-  } else {
-    out.normal_force_N = in_contact ? T(shape.stiffness * pow(out.penetration_m, 1.5)) : T(0);
+    elastic_N = T(spec.prescribed_wheel_load_N);
+    out.normal_force_N = elastic_N;
+  } else if (in_contact) {
+    elastic_N = T(shape.stiffness * pow(out.penetration_m, 1.5));
+    out.normal_force_N = elastic_N;
+    if (spec.normal_damping_N_s_per_m > 0.0) {
+      const T penetration_rate = -slip_velocity().dot(nu_I);
+      out.normal_force_N += T(spec.normal_damping_N_s_per_m) * penetration_rate;
+      if (value_of(out.normal_force_N) < 0.0) out.normal_force_N = T(0);  // never pulls
+    }
   }
   out.force_I = out.normal_force_N * nu_I;
   out.moment_I = out.point_I.cross(out.force_I);
   if (spec.tangential == TangentialForceKind::none || value_of(out.normal_force_N) <= 0.0)
     return out;
 
-  // Creepages: slip velocity of the wheel material at P (the rail is at rest).
-  const Vec3<T> w_T = to_scalar<T>(ws.track->w_WT_T);
-  const Vec3<T> v_T = to_scalar<T>(ws.track->v_WT_T);
-  const Vec3<T> v_centre_I = R_IT * (v_T + w_T.cross(w) + ws.qd.template head<3>());
-  const Vec3<T> v_slip_I = v_centre_I + ws.w_B_I.cross(out.point_I);
+  // Creepages.
+  const Vec3<T> v_slip_I = slip_velocity();
   const T V = T(speed_m_per_s);
   out.creep_x = v_slip_I.dot(l_I) / V;
   out.creep_y = v_slip_I.dot(t_I) / V;
@@ -119,7 +137,7 @@ WheelContact<T> evaluate_wheel_contact(const ModelContact& contact, const BodyMo
   if (spec.tangential == TangentialForceKind::constant) {
     f = {T(spec.f11_N), T(spec.f22_N), T(spec.f23_N_m), T(spec.f33_N_m2)};
   } else {
-    const T cube_root_N = pow(out.normal_force_N, 1.0 / 3.0);
+    const T cube_root_N = pow(elastic_N, 1.0 / 3.0);
     out.semi_axis_a_m = shape.semi_axis_a_per_force_13 * cube_root_N;
     out.semi_axis_b_m = shape.semi_axis_b_per_force_13 * cube_root_N;
     f = kalker_coefficients(out.semi_axis_a_m, out.semi_axis_b_m,

@@ -540,6 +540,8 @@ ContactSpec read_contact(const TableReader& contact, std::string name) {
   spec.rail_poisson_ratio = contact.number_or("rail_poisson_ratio", "", spec.rail_poisson_ratio);
   spec.spin_creepage = contact.flag_or("spin_creepage", spec.spin_creepage);
   spec.flange_clearance_m = contact.number_or("flange_clearance_m", "m", spec.flange_clearance_m);
+  spec.normal_damping_N_s_per_m =
+      contact.number_or("normal_damping_N_s_per_m", "N s/m", spec.normal_damping_N_s_per_m);
   return spec;
 }
 
@@ -558,7 +560,8 @@ std::vector<ContactSpec> read_contacts(const TableReader& top) {
          "nominal_rolling_radius_m", "normal", "prescribed_wheel_load_N",
          "rail_head_transverse_radius_m", "wheel_young_modulus_Pa", "wheel_poisson_ratio",
          "rail_young_modulus_Pa", "rail_poisson_ratio", "tangential", "spin_creepage", "f11_N",
-         "f22_N", "f23_N_m", "f33_N_m2", "flange_clearance_m"});
+         "f22_N", "f23_N_m", "f33_N_m2", "flange_clearance_m",
+         "normal_damping_N_s_per_m"});
     contacts.push_back(read_contact(contact, std::string(name.str())));
   }
   return contacts;
@@ -887,6 +890,7 @@ class SceneChecker {
     require_positive(at("half_contact_distance_m"), contact.half_contact_distance_m, "m");
     require_positive(at("nominal_rolling_radius_m"), contact.nominal_rolling_radius_m, "m");
     require_positive(at("flange_clearance_m"), contact.flange_clearance_m, "m");
+    require_non_negative(at("normal_damping_N_s_per_m"), contact.normal_damping_N_s_per_m, "N s/m");
     require_positive(at("rail_head_transverse_radius_m"), contact.rail_head_transverse_radius_m,
                      "m");
     require_positive(at("wheel_young_modulus_Pa"), contact.wheel_young_modulus_Pa, "Pa");

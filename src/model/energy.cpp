@@ -40,7 +40,7 @@ EnergyParts mechanical_energy(const Model& model, double t_s, const Eigen::Vecto
     if (c.spec.normal != NormalForceKind::hertz) continue;
     for (int side : {1, -1}) {
       const WheelContact<double> w = evaluate_wheel_contact(c, motions[b], side, model.speed_m_per_s);
-      if (w.penetration_m > 0.0) e.contact_J += 0.4 * w.normal_force_N * w.penetration_m;
+      if (w.penetration_m > 0.0) e.contact_J += 0.4 * w.elastic_normal_force_N * w.penetration_m;
     }
   }
   return e;

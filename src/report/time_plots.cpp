@@ -42,6 +42,7 @@ std::vector<std::string> plot_time_histories(const Model& model, const std::stri
       {"wheelset_yaw", false, "Yaw angle of the wheelsets", "yaw [mrad]", 5, 1e3, wheelsets},
       {"body_lateral", false, "Lateral shift of bogie frames and car body", "lateral shift y [mm]", 1,
        1e3, others},
+      {"body_yaw", false, "Yaw angle of bogie frames and car body", "yaw [mrad]", 5, 1e3, others},
       {"roll", false, "Roll angle of all bodies (relative to their track frames)", "roll [mrad]", 3,
        1e3, all},
       {"absolute_roll", true, "Roll angle of all bodies in the fixed frame (follows the cant)",

@@ -79,6 +79,12 @@ struct ContactSpec {
   NormalForceKind normal = NormalForceKind::hertz;
   double prescribed_wheel_load_N = 0.0;   // normal = prescribed
   double rail_head_transverse_radius_m = 0.30;  // ERRATA 8
+  // Viscous damping of the Hertz contact along its normal (rail pad, track
+  // bed, material damping lumped), in parallel with the Hertz spring while
+  // the wheel is in contact; the normal force never pulls (clipped at 0).
+  // The thesis has none (default 0): its wheel-rail vertical modes are then
+  // damped only through the creep forces and can go unstable in curves.
+  double normal_damping_N_s_per_m = 0.0;
   // Validity limit of the flangeless contact models: a wheelset whose lateral
   // shift exceeds it would be in flange contact, which is not modelled, so the
   // time integration stops there (choice: a typical nominal flange clearance).

@@ -307,6 +307,12 @@ TEST(SceneLoader, ClothoidNeedsExactlyOneEndCurvature) {
                      {"track.segments[1]:", "expected exactly one of end_radius_m", "got neither"});
 }
 
+TEST(SceneLoader, ContactDampingMustNotBeNegative) {
+  expect_scene_error(minimal_with("cone_angle_rad = 0.12",
+                                  "cone_angle_rad = 0.12\nnormal_damping_N_s_per_m = -1.0"),
+                     {"contacts.cone.normal_damping_N_s_per_m", "expected a number >= 0 (N s/m)", "got -1"});
+}
+
 TEST(SceneLoader, RequiredKeysOfTheChosenContactModel) {
   expect_scene_error(minimal_with("normal = \"hertz\"", "normal = \"prescribed\""),
                      {"contacts.cone.prescribed_wheel_load_N", "expected a number (N)",
