@@ -17,17 +17,16 @@ using namespace railstab;
 namespace {
 
 // The thesis bogie on tangent track with the given contact damping, written
-// to a temporary scene file (the case file plus one key).
+// to a temporary scene file (the case file with that one value changed).
 PreparedScene bogie_with_contact_damping(double c_N_s_per_m, double speed_m_per_s) {
   std::ifstream in(std::string(RAILSTAB_CASES_DIR) + "/thesis_bogie_tangent.toml");
   std::stringstream text;
   text << in.rdbuf();
   std::string scene = text.str();
-  const std::string anchor = "spin_creepage = true\n";
-  const size_t at = scene.find(anchor);
+  const std::string key = "normal_damping_N_s_per_m = 0.0";
+  const size_t at = scene.find(key);
   EXPECT_NE(at, std::string::npos);
-  scene.insert(at + anchor.size(),
-               "normal_damping_N_s_per_m = " + std::to_string(c_N_s_per_m) + "\n");
+  scene.replace(at, key.size(), "normal_damping_N_s_per_m = " + std::to_string(c_N_s_per_m));
   const auto path = std::filesystem::temp_directory_path() /
                     ("railstab_contact_damping_" + std::to_string(int(c_N_s_per_m)) + ".toml");
   std::ofstream(path) << scene;
