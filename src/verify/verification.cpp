@@ -108,9 +108,15 @@ VerificationResult verify_least_stable_mode(const Model& model, const Eigen::Vec
   io.output_interval_s = period / 50.0;
   io.relative_tolerance = options.relative_tolerance;
   io.absolute_tolerance = options.absolute_tolerance;
-  const Eigen::VectorXd x0 = point.equilibrium.state + dx;
+  const Eigen::VectorXd x0 =
+      options.initial_state ? *options.initial_state : Eigen::VectorXd(point.equilibrium.state + dx);
+  if (x0.size() != point.equilibrium.state.size())
+    throw std::invalid_argument("verify: the given initial state has the wrong size");
   out.trajectory = integrate(model, x0, io);
   out.integration_seconds = out.trajectory.stats.wall_seconds;
+  out.integrator = integrator_name(io.kind);
+  out.relative_tolerance = io.relative_tolerance;
+  out.start = options.initial_state ? "given initial state" : "mode perturbation";
   if (!out.trajectory.stopped_early.empty())
     throw std::runtime_error("verify: the time integration stopped early: " +
                              out.trajectory.stopped_early);

@@ -10,6 +10,7 @@
 #include "verify/damped_sinusoid_fit.hpp"
 
 #include <complex>
+#include <optional>
 #include <string>
 
 namespace railstab {
@@ -23,6 +24,10 @@ struct VerificationOptions {
   double relative_tolerance = 1e-7;
   double absolute_tolerance = 1e-11;
   double hunting_band_hz = 20.0;
+  // A given start (e.g. the scene's initial offsets on the equilibrium)
+  // instead of the perturbation along the mode; the signal is still the
+  // lateral shift the mode moves most, fitted after settle_periods.
+  std::optional<Eigen::VectorXd> initial_state;
 };
 
 struct VerificationResult {
@@ -41,6 +46,9 @@ struct VerificationResult {
   // tolerances, relative to the signal's largest magnitude.
   double integration_error_relative = 0.0;
   double integration_seconds = 0.0;
+  std::string integrator;
+  double relative_tolerance = 0.0;  // of the run (the error run is 100x tighter)
+  std::string start;  // "mode perturbation" or "given initial state"
   Trajectory trajectory;
   std::vector<double> window_times, window_signal;
 };

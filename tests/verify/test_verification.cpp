@@ -74,3 +74,22 @@ TEST(Verification, RefusesToRunOffTheUniformTrack) {
         << e.what();
   }
 }
+
+// From the thesis cases' own start (1 mm offset of wheelset1) instead of the
+// mode: the other modes die out in the two settling periods and the fit
+// still meets the targets (measured 7e-6 and 0.55 % on the real part: the
+// 1 mm start is ten times the mode perturbation, so the amplitude-dependent
+// nonlinearity shows at 38 m/s).
+TEST(Verification, FromTheSceneOffsetsMeetsTheTargets) {
+  for (double v : {20.0, 38.0}) {
+    const PreparedScene s = prepare_scene(std::string(RAILSTAB_CASES_DIR) +
+                                              "/thesis_bogie_tangent.toml", {v, {}, {}});
+    VerificationOptions o;
+    o.initial_state = perturbed_initial_state(s);
+    const VerificationResult r = verify_least_stable_mode(s.model, s.equilibrium.state, o);
+    EXPECT_EQ(r.start, "given initial state");
+    EXPECT_LT(r.frequency_difference_relative, 0.01) << v;
+    EXPECT_LT(r.real_difference_relative, 0.05) << v;
+    EXPECT_EQ(r.fitted_real_per_s > 0.0, v > 36.9) << v;
+  }
+}
