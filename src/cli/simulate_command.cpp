@@ -29,6 +29,7 @@ struct SimulateArgs {
   std::string integrator;  // label, e.g. "cvode_bdf_q2"; empty: the scene's
   std::optional<double> rtol, atol;
   bool estimate_error = true;
+  bool stop_on_lift_off = false;
 };
 
 IntegrationOptions integration_options(const SimulateArgs& args, const SimulationSpec& sim) {
@@ -40,6 +41,7 @@ IntegrationOptions integration_options(const SimulateArgs& args, const Simulatio
   }
   opt.relative_tolerance = args.rtol.value_or(sim.relative_tolerance);
   opt.absolute_tolerance = args.atol.value_or(sim.absolute_tolerance);
+  opt.stop_on_lift_off = args.stop_on_lift_off;
   return opt;
 }
 
@@ -160,6 +162,9 @@ void register_simulate_command(CLI::App& app) {
       ->check(CLI::PositiveNumber);
   cmd->add_flag("!--no-error-estimate", args->estimate_error,
                 "skip the second run at 100x tighter tolerances that estimates the error");
+  cmd->add_flag("--stop-on-lift-off", args->stop_on_lift_off,
+                "stop at the first wheel that loses contact (otherwise lift-offs are listed and "
+                "the run goes on)");
   cmd->add_flag("!--no-plots", args->plots, "do not run gnuplot");
   cmd->callback([args] { run_simulate(*args); });
 }
