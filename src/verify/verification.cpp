@@ -117,9 +117,21 @@ VerificationResult verify_least_stable_mode(const Model& model, const Eigen::Vec
   out.integrator = integrator_name(io.kind);
   out.relative_tolerance = io.relative_tolerance;
   out.start = options.initial_state ? "given initial state" : "mode perturbation";
-  if (!out.trajectory.stopped_early.empty())
-    throw std::runtime_error("verify: the time integration stopped early: " +
-                             out.trajectory.stopped_early);
+  if (!out.trajectory.stopped_early.empty()) {
+    std::ostringstream msg;
+    msg << "verify: the time integration stopped early: " << out.trajectory.stopped_early;
+    // The usual reason: the steady state is unstable through a mode the
+    // hunting band leaves out (the wheel-rail contact modes in curves).
+    if (!point.unstable_above_band.empty()) {
+      const ModeReport& m = point.modes[size_t(point.unstable_above_band.front())];
+      msg << ". The steady state has " << point.unstable_above_band.size()
+          << " unstable mode(s) above the hunting band, e.g. " << m.name << " at "
+          << m.frequency_hz << " Hz growing at " << m.eigenvalue.real()
+          << " 1/s, so the time domain leaves it (contacts.<name>.normal_damping_N_s_per_m "
+             "damps the wheel-rail contact modes)";
+    }
+    throw std::runtime_error(msg.str());
+  }
 
   const double y_eq = point.equilibrium.state(signal_state);
   for (size_t i = 0; i < out.trajectory.times_s.size(); ++i) {
