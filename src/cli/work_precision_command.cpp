@@ -96,11 +96,14 @@ std::string write_plot(const std::string& prefix, const Model& model, double t_e
         << "set xlabel 'CPU time [s]'\n"
         << "set ylabel 'max position error [m, rad]'\n"
         << "set format y '%.0e'\n";
+    // Dark, distinguishable colours (gnuplot's default cycle has a pale yellow).
+    static const char* colours[] = {"#1b9e77", "#d95f02", "#7570b3", "#e7298a",
+                                    "#66a61e", "#a6761d", "#000000", "#1f78b4"};
     out << "plot ";
     for (size_t i = 0; i < plotted.size(); ++i)
       out << (i ? ", \\\n     " : "") << "'" << dat << "' index " << i
-          << " using 1:2 with linespoints lw 1.5 pt " << (i + 4) << " title '" << plotted[i]
-          << "'";
+          << " using 1:2 with linespoints lw 1.5 pt " << (i + 4) << " lc rgb '" << colours[i % 8]
+          << "' title '" << plotted[i] << "'";
     if (plotted.empty()) out << "NaN title 'no finished run'";
     out << "\n";
   });
