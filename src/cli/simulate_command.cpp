@@ -14,6 +14,7 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <sstream>
 
 namespace railstab {
 
@@ -45,44 +46,58 @@ IntegrationOptions integration_options(const SimulateArgs& args, const Simulatio
   return opt;
 }
 
-void write_run_json(const std::string& path, const Model& model, const IntegrationOptions& opt,
-                    const Trajectory& traj, const std::optional<ErrorEstimate>& error) {
-  write_file_atomically(path, [&](std::ostream& out) {
-    JsonWriter j(out);
-    const double simulated = traj.times_s.back() - opt.t_start_s;
-    j.begin_object()
-        .field("scene", model.name)
-        .field("speed_m_s", model.speed_m_per_s)
-        .field("states", model.state_size())
-        .field("integrator", IntegratorVariant{opt.kind, opt.order}.label())
-        .field("relative_tolerance", opt.relative_tolerance)
-        .field("absolute_tolerance", opt.absolute_tolerance)
-        .field("simulated_s", simulated)
-        .field("wall_seconds", traj.stats.wall_seconds)
-        .field("cpu_seconds", traj.stats.cpu_seconds)
-        .field("real_time_factor", simulated / traj.stats.wall_seconds)
-        .field("steps", int(traj.stats.steps))
-        .field("rhs_evaluations", int(traj.stats.rhs_evaluations))
-        .field("jacobian_evaluations", int(traj.stats.jacobian_evaluations))
-        .field("stopped_early", traj.stopped_early);
-    j.key("contact_events").begin_array();
-    for (const ContactEvent& e : traj.events) j.value(e.description);
-    j.end_array();
-    j.key("error_estimate");
-    if (!error) {
-      j.null();
+// The run summary as JSON text, rendered before any file is written so a
+// failure here leaves no partial set of outputs.
+std::string run_json(const Model& model, const IntegrationOptions& opt, const Trajectory& traj,
+                     const std::optional<ErrorEstimate>& error) {
+  std::ostringstream out;
+  JsonWriter j(out);
+  const double simulated = traj.times_s.back() - opt.t_start_s;
+  j.begin_object()
+      .field("scene", model.name)
+      .field("speed_m_s", model.speed_m_per_s)
+      .field("states", model.state_size())
+      .field("integrator", IntegratorVariant{opt.kind, opt.order}.label())
+      .field("relative_tolerance", opt.relative_tolerance)
+      .field("absolute_tolerance", opt.absolute_tolerance)
+      .field("simulated_s", simulated)
+      .field("wall_seconds", traj.stats.wall_seconds)
+      .field("cpu_seconds", traj.stats.cpu_seconds);
+  j.key("real_time_factor");
+  if (simulated > 0.0 && traj.stats.wall_seconds > 0.0)
+    j.value(simulated / traj.stats.wall_seconds);
+  else
+    j.null();
+  j.field("steps", int(traj.stats.steps))
+      .field("rhs_evaluations", int(traj.stats.rhs_evaluations))
+      .field("jacobian_evaluations", int(traj.stats.jacobian_evaluations))
+      .field("stopped_early", traj.stopped_early);
+  j.key("contact_events").begin_array();
+  for (const ContactEvent& e : traj.events) j.value(e.description);
+  j.end_array();
+  j.key("error_estimate");
+  if (!error) {
+    j.null();
+  } else {
+    j.begin_object().field("method", "difference to the same run at " +
+                                         std::to_string(int(error->tightening)) +
+                                         "x tighter tolerances, at the output times both reached");
+    if (!error->available) {
+      j.field("available", false).field("reason", error->reason);
     } else {
-      j.begin_object()
-          .field("method", "difference to the same run at " + std::to_string(int(error->tightening)) +
-                               "x tighter tolerances")
+      j.field("available", true)
           .field("position_error", error->position_error)
           .field("position_error_at", error->where)
           .field("lateral_error", error->lateral_error)
-          .field("reference_wall_seconds", error->wall_seconds)
-          .end_object();
+          .field("compared_outputs", error->compared_outputs)
+          .field("reference_end_s", error->reference_end_s)
+          .field("reference_stopped_early", error->reference_stopped_early)
+          .field("reference_wall_seconds", error->wall_seconds);
     }
     j.end_object();
-  });
+  }
+  j.end_object();
+  return out.str();
 }
 
 void run_simulate(const SimulateArgs& args) {
@@ -115,31 +130,41 @@ void run_simulate(const SimulateArgs& args) {
                                               std::to_string(int(std::lround(model.speed_m_per_s))) +
                                               "mps")).string();
   const std::string csv = args.csv.empty() ? base + ".csv" : args.csv;
-  write_trajectory_csv(csv, model, traj);
-  std::cout << "wrote " << csv << "\n";
   const std::string roll_csv = base + "_absolute_roll.csv";
+  const std::string json = base + "_run.json";
+  // Data files first (each written atomically; the JSON text is rendered
+  // before any of them), the plots, which are views of the CSVs, last.
+  const std::string summary = run_json(model, opt, traj, error);
+  write_trajectory_csv(csv, model, traj);
   write_absolute_roll_csv(roll_csv, model, traj);
-  std::cout << "wrote " << roll_csv << "\n";
+  write_file_atomically(json, [&](std::ostream& out) { out << summary; });
+  for (const std::string& f : {csv, roll_csv, json}) std::cout << "wrote " << f << "\n";
   if (args.plots)
     for (const std::string& png : plot_time_histories(model, csv, roll_csv, base))
       std::cout << "wrote " << png << "\n";
   const double simulated = traj.times_s.back() - opt.t_start_s;
-  const std::string json = base + "_run.json";
-  write_run_json(json, model, opt, traj, error);
-  std::cout << "wrote " << json << "\n";
-  std::cout << "integrator " << IntegratorVariant{opt.kind, opt.order}.label() << " rtol " << opt.relative_tolerance
-            << " atol " << opt.absolute_tolerance << ": " << traj.stats.steps << " steps, "
-            << traj.stats.rhs_evaluations << " rhs evaluations, "
-            << traj.stats.jacobian_evaluations << " AD Jacobians, wall "
-            << traj.stats.wall_seconds << " s for " << simulated << " s simulated (real-time factor "
-            << simulated / traj.stats.wall_seconds << ")\n";
-  if (error)
+  std::cout << "integrator " << IntegratorVariant{opt.kind, opt.order}.label() << " rtol "
+            << opt.relative_tolerance << " atol " << opt.absolute_tolerance << ": "
+            << traj.stats.steps << " steps, " << traj.stats.rhs_evaluations
+            << " rhs evaluations, " << traj.stats.jacobian_evaluations << " AD Jacobians, wall "
+            << traj.stats.wall_seconds << " s for " << simulated << " s simulated";
+  if (simulated > 0.0 && traj.stats.wall_seconds > 0.0)
+    std::cout << " (real-time factor " << simulated / traj.stats.wall_seconds << ")";
+  std::cout << "\n";
+  if (!error)
+    std::cout << "error not estimated (--no-error-estimate)\n";
+  else if (!error->available)
+    std::cout << "error not estimated: " << error->reason << "\n";
+  else
     std::cout << "estimated error: " << error->position_error << " (m or rad, at " << error->where
               << "), lateral shift/yaw " << error->lateral_error
               << ", from the same run at 100x tighter tolerances (wall " << error->wall_seconds
               << " s)\n";
-  else
-    std::cout << "error not estimated (--no-error-estimate)\n";
+  if (error && error->available && error->reference_stopped_early != traj.stopped_early)
+    std::cout << "note: the tighter run "
+              << (error->reference_stopped_early.empty() ? "did not stop early"
+                                                         : "stopped: " + error->reference_stopped_early)
+              << "\n";
 }
 
 }  // namespace

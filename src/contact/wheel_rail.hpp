@@ -104,8 +104,10 @@ WheelContact<T> evaluate_wheel_contact(const ModelContact& contact, const BodyMo
     const Vec3<T> v_centre_I = R_IT * (v_T + w_T.cross(w) + ws.qd.template head<3>());
     return Vec3<T>(v_centre_I + ws.w_B_I.cross(out.point_I));
   };
-  // The elastic (Hertz) load sizes the contact ellipse; damping adds to the
-  // force only.
+  // The normal load (Hertz plus damping, never pulling) sizes the contact
+  // ellipse, so the creep coefficients go to zero with it, continuously,
+  // whether the wheel lifts off or the damper unloads it. The elastic part
+  // alone is kept for the contact's potential energy.
   T& elastic_N = out.elastic_normal_force_N;
   elastic_N = T(0);  // (an AutoDiffScalar's T{} leaves the value unset)
   out.normal_force_N = T(0);
@@ -137,7 +139,7 @@ WheelContact<T> evaluate_wheel_contact(const ModelContact& contact, const BodyMo
   if (spec.tangential == TangentialForceKind::constant) {
     f = {T(spec.f11_N), T(spec.f22_N), T(spec.f23_N_m), T(spec.f33_N_m2)};
   } else {
-    const T cube_root_N = pow(elastic_N, 1.0 / 3.0);
+    const T cube_root_N = pow(out.normal_force_N, 1.0 / 3.0);
     out.semi_axis_a_m = shape.semi_axis_a_per_force_13 * cube_root_N;
     out.semi_axis_b_m = shape.semi_axis_b_per_force_13 * cube_root_N;
     f = kalker_coefficients(out.semi_axis_a_m, out.semi_axis_b_m,

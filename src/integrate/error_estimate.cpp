@@ -10,16 +10,25 @@ ErrorEstimate estimate_integration_error(const Model& model, const Eigen::Vector
   IntegrationOptions tight = options;
   tight.relative_tolerance /= tightening;
   tight.absolute_tolerance /= tightening;
-  // End where the run ended (a run stopped at a validity limit is compared
-  // up to there); no progress lines from the second run.
-  tight.t_end_s = run.times_s.back();
-  tight.progress = nullptr;
+  tight.progress = nullptr;  // no progress lines from the second run
   const Trajectory ref = integrate(model, x0, tight);
   ErrorEstimate e;
   e.tightening = tightening;
-  e.position_error = trajectory_position_error(model, run, ref, &e.where);
-  e.lateral_error = trajectory_position_error(model, run, ref, nullptr, ErrorCoordinates::lateral);
   e.wall_seconds = ref.stats.wall_seconds;
+  e.reference_end_s = ref.times_s.back();
+  e.reference_stopped_early = ref.stopped_early;
+  // Compared at the output times both runs reached (a stop at a root is at
+  // each run's own time and is skipped).
+  e.position_error = trajectory_position_error(model, run, ref, &e.where,
+                                               ErrorCoordinates::positions, &e.compared_outputs);
+  e.lateral_error = trajectory_position_error(model, run, ref, nullptr, ErrorCoordinates::lateral);
+  if (e.compared_outputs < 2) {
+    e = ErrorEstimate{};
+    e.available = false;
+    e.tightening = tightening;
+    e.reason = "fewer than two output times in common with the tighter run (the run ended at t = " +
+               std::to_string(run.times_s.back()) + " s)";
+  }
   return e;
 }
 

@@ -110,6 +110,10 @@ IntegrationOptions integration_options_for(const SimulationSpec& simulation) {
 
 Trajectory integrate(const Model& model, const Eigen::VectorXd& x0,
                      const IntegrationOptions& options) {
+  if (!order_available(options.kind, options.order))
+    throw std::invalid_argument("time integration: " + integrator_name(options.kind) +
+                                " has no order " + std::to_string(options.order) + " (offers " +
+                                available_orders_text(options.kind) + ")");
   const auto wall_start = std::chrono::steady_clock::now();
   const std::clock_t cpu_start = std::clock();
   const RootFunctionSet roots(model);

@@ -19,9 +19,15 @@ std::vector<IntegratorVariant> default_variants() {
 
 IntegratorVariant parse_integrator_variant(const std::string& label) {
   const size_t q = label.rfind("_q");
-  if (q != std::string::npos && q + 2 < label.size() &&
-      label.find_first_not_of("0123456789", q + 2) == std::string::npos)
-    return {parse_integrator_kind(label.substr(0, q)), std::stoi(label.substr(q + 2))};
+  if (q != std::string::npos && q + 2 < label.size() && label.size() - q <= 4 &&
+      label.find_first_not_of("0123456789", q + 2) == std::string::npos) {
+    const IntegratorKind kind = parse_integrator_kind(label.substr(0, q));
+    const int order = std::stoi(label.substr(q + 2));  // at most two digits
+    if (order == 0 || !order_available(kind, order))
+      throw std::invalid_argument("integrator '" + label + "': " + integrator_name(kind) +
+                                  " offers orders " + available_orders_text(kind));
+    return {kind, order};
+  }
   return {parse_integrator_kind(label), 0};
 }
 
@@ -67,20 +73,36 @@ std::string format_run(const WorkPrecisionRun& r) {
 }  // namespace
 
 double trajectory_position_error(const Model& model, const Trajectory& run, const Trajectory& ref,
-                                 std::string* where, ErrorCoordinates which) {
+                                 std::string* where, ErrorCoordinates which, int* compared) {
   const std::vector<int> states = compared_states(model, which);
-  const size_t n = std::min(run.states.size(), ref.states.size());
   double worst = 0.0;
-  int worst_state = -1;
-  for (size_t i = 0; i < n; ++i)
+  int worst_state = -1, matched = 0;
+  // Rows at the same time only: both runs share the output grid, but a run
+  // that stops at a root ends at its own time (and contact events add no
+  // rows), so matching by index could compare different instants.
+  size_t j = 0;
+  for (size_t i = 0; i < run.times_s.size(); ++i) {
+    const double t = run.times_s[i];
+    const double slack = 1e-12 * (1.0 + std::abs(t));
+    while (j < ref.times_s.size() && ref.times_s[j] < t - slack) ++j;
+    if (j == ref.times_s.size()) break;
+    if (std::abs(ref.times_s[j] - t) > slack) continue;
+    ++matched;
     for (int k : states) {
-      const double e = std::abs(run.states[i](k) - ref.states[i](k));
-      if (!(e <= worst)) {  // also catches NaN
+      const double e = std::abs(run.states[i](k) - ref.states[j](k));
+      if (std::isnan(e)) {
+        if (where) *where = model.state_name(k);
+        if (compared) *compared = matched;
+        return std::numeric_limits<double>::quiet_NaN();
+      }
+      if (e > worst) {
         worst = e;
         worst_state = k;
       }
     }
+  }
   if (where) *where = worst_state >= 0 ? model.state_name(worst_state) : "";
+  if (compared) *compared = matched;
   return worst;
 }
 

@@ -83,11 +83,14 @@ enum class ErrorCoordinates {
   lateral     // lateral shift and yaw only: the hunting motion itself
 };
 
-// The error measure of `run` against `ref` (same output times); sets
-// `where` to the state name of the maximum. Compares the common outputs.
+// The error measure of `run` against `ref` over the output times both have
+// (a run stopped at a root ends at its own time, which is skipped); sets
+// `where` to the state name of the maximum and `compared` to the number of
+// common outputs. NaN as soon as a difference is NaN.
 double trajectory_position_error(const Model& model, const Trajectory& run, const Trajectory& ref,
                                  std::string* where = nullptr,
-                                 ErrorCoordinates which = ErrorCoordinates::positions);
+                                 ErrorCoordinates which = ErrorCoordinates::positions,
+                                 int* compared = nullptr);
 
 ReferenceSolution compute_reference(const Model& model, const Eigen::VectorXd& x0,
                                     const WorkPrecisionSettings& settings);

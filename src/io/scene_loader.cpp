@@ -754,8 +754,11 @@ SimulationSpec read_simulation(const std::optional<TableReader>& simulation) {
   spec.output_interval_s = simulation->number_or("output_interval_s", "s", spec.output_interval_s);
   spec.integrator = simulation->choice_or("integrator", integrator_choices(), spec.integrator);
   const double order = simulation->number_or("integrator_order", "", spec.integrator_order);
-  if (!(order == std::floor(order) && order >= 0.0 && order <= 12.0))
-    simulation->fail("integrator_order", "an integer 0-12 (0: the method's default)",
+  if (!(order == std::floor(order) && order >= 0.0 && order <= 12.0) ||
+      !order_available(spec.integrator, int(order)))
+    simulation->fail("integrator_order",
+                     "0 (the method's default) or an order " + integrator_name(spec.integrator) +
+                         " offers: " + available_orders_text(spec.integrator),
                      format_number(order));
   spec.integrator_order = int(order);
   spec.relative_tolerance =
@@ -899,6 +902,10 @@ class SceneChecker {
     check_poisson_ratio(at("rail_poisson_ratio"), contact.rail_poisson_ratio);
     if (contact.normal == NormalForceKind::prescribed)
       require_positive(at("prescribed_wheel_load_N"), contact.prescribed_wheel_load_N, "N");
+    if (contact.normal == NormalForceKind::prescribed && contact.normal_damping_N_s_per_m != 0.0)
+      fail(at("normal_damping_N_s_per_m"), "0 with normal = 'prescribed' (the damper acts on "
+           "the Hertz penetration rate; a prescribed load has none)",
+           format_number(contact.normal_damping_N_s_per_m));
     if (contact.tangential == TangentialForceKind::constant) {
       require_non_negative(at("f11_N"), contact.f11_N, "N");
       require_non_negative(at("f22_N"), contact.f22_N, "N");

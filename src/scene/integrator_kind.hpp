@@ -14,4 +14,12 @@ std::string integrator_name(IntegratorKind kind);
 IntegratorKind parse_integrator_kind(const std::string& name);
 const std::vector<IntegratorKind>& all_integrator_kinds();
 
+// Orders the method offers (SUNDIALS 6.4): CVODE BDF 1-5 and Adams 1-12 (the
+// maximum order); ARKODE's default tables ERK 2-6 and 8, DIRK 2-5, IMEX 3-5.
+// 0 always means the method's default.
+std::vector<int> available_orders(IntegratorKind kind);
+bool order_available(IntegratorKind kind, int order);
+// "2, 3, 4, 5" for messages.
+std::string available_orders_text(IntegratorKind kind);
+
 }  // namespace railstab

@@ -12,29 +12,41 @@ namespace railstab {
 
 namespace {
 
-// Perturbation of the full state along the real part of a mode, scaled so
-// the largest lateral displacement of any body is `amplitude`; also returns
-// that lateral state (the signal to fit). Scaling by the wheelsets alone
-// would blow up a car-body sway mode, in which the wheelsets hardly move,
-// to centimetres of car-body motion.
-Eigen::VectorXd mode_perturbation(const Model& model, const LinearModel& lin,
-                                  const Eigen::VectorXcd& v, double amplitude, int& signal_state) {
-  Eigen::VectorXd dx = Eigen::VectorXd::Zero(model.state_size());
-  for (size_t i = 0; i < lin.kept_states.size(); ++i) dx(lin.kept_states[i]) = v(Eigen::Index(i)).real();
+// The lateral shift (any body) with the largest modal amplitude |v_k|: the
+// signal to fit. Complex magnitudes, not real parts: the phase of an
+// eigenvector is arbitrary, so a real part can hide the largest motion.
+int lateral_signal_state(const Model& model, const LinearModel& lin, const Eigen::VectorXcd& v) {
+  int signal = -1;
   double largest = 0.0;
-  signal_state = -1;
-  for (int k = 0; k < model.n_coordinates; ++k) {
-    const auto [b, c] = model.coordinate_of_state[k];
-    if (c != int(CoordinateIndex::y)) continue;
-    const double weight = std::abs(dx(k));
-    if (weight > largest) {
-      largest = weight;
-      signal_state = k;
+  for (size_t i = 0; i < lin.kept_states.size(); ++i) {
+    const int k = lin.kept_states[i];
+    if (k >= model.n_coordinates) continue;
+    if (model.coordinate_of_state[size_t(k)].second != int(CoordinateIndex::y)) continue;
+    if (std::abs(v(Eigen::Index(i))) > largest) {
+      largest = std::abs(v(Eigen::Index(i)));
+      signal = k;
     }
   }
-  if (signal_state < 0 || largest == 0.0)
-    throw std::runtime_error("verify: the chosen mode moves no body laterally");
-  return dx * (amplitude / largest);
+  if (signal < 0) throw std::runtime_error("verify: the chosen mode moves no body laterally");
+  return signal;
+}
+
+// Perturbation of the full state along the mode, rotated so the signal's
+// component is real and positive (the response starts at a crest, the
+// best-conditioned fit) and scaled so the signal starts at `amplitude`.
+// No lateral shift has a larger modal amplitude, so none oscillates above
+// it. (Scaling by the wheelsets alone would blow a car-body sway mode, in
+// which they hardly move, up to centimetres of car-body motion.)
+Eigen::VectorXd mode_perturbation(const Model& model, const LinearModel& lin,
+                                  const Eigen::VectorXcd& v, int signal_state, double amplitude) {
+  Eigen::Index s = 0;
+  for (size_t i = 0; i < lin.kept_states.size(); ++i)
+    if (lin.kept_states[i] == signal_state) s = Eigen::Index(i);
+  const Eigen::VectorXcd rotated = v * (std::conj(v(s)) / std::abs(v(s)));
+  Eigen::VectorXd dx = Eigen::VectorXd::Zero(model.state_size());
+  for (size_t i = 0; i < lin.kept_states.size(); ++i)
+    dx(lin.kept_states[i]) = rotated(Eigen::Index(i)).real();
+  return dx * (amplitude / std::abs(v(s)));
 }
 
 }  // namespace
@@ -61,16 +73,9 @@ VerificationResult verify_least_stable_mode(const Model& model, const Eigen::Vec
   out.eigen_real_per_s = mode.eigenvalue.real();
   out.eigen_frequency_hz = mode.frequency_hz;
 
-  // Rotate the eigenvector so the signal state's component is real (the
-  // perturbation then starts at a crest, the best-conditioned fit).
-  Eigen::VectorXcd v = mode.vector;
-  int signal_state = -1;
-  mode_perturbation(model, point.linear, v, 1.0, signal_state);
-  Eigen::Index signal_in_lin = 0;
-  for (size_t i = 0; i < point.linear.kept_states.size(); ++i)
-    if (point.linear.kept_states[i] == signal_state) signal_in_lin = Eigen::Index(i);
-  v *= std::conj(v(signal_in_lin)) / std::abs(v(signal_in_lin));
-  const Eigen::VectorXd dx = mode_perturbation(model, point.linear, v, options.amplitude_m, signal_state);
+  const int signal_state = lateral_signal_state(model, point.linear, mode.vector);
+  const Eigen::VectorXd dx =
+      mode_perturbation(model, point.linear, mode.vector, signal_state, options.amplitude_m);
   out.signal = model.state_name(signal_state);
 
   const double period = 1.0 / mode.frequency_hz;
@@ -154,8 +159,14 @@ VerificationResult verify_least_stable_mode(const Model& model, const Eigen::Vec
   tight.relative_tolerance /= 100.0;
   tight.absolute_tolerance /= 100.0;
   const Trajectory ref = integrate(model, x0, tight);
+  if (ref.times_s.size() != out.trajectory.times_s.size() || !ref.stopped_early.empty())
+    throw std::runtime_error(
+        "verify: the run at 100x tighter tolerances did not reach the same end (" +
+        (ref.stopped_early.empty() ? std::string("it ended at t = ") + std::to_string(ref.times_s.back()) + " s"
+                                   : ref.stopped_early) +
+        "): the response is not resolved at the verify tolerances");
   double diff = 0.0, peak = 0.0;
-  const size_t n = std::min(ref.states.size(), out.trajectory.states.size());
+  const size_t n = ref.states.size();
   for (size_t i = 0; i < n; ++i) {
     diff = std::max(diff, std::abs(ref.states[i](signal_state) - out.trajectory.states[i](signal_state)));
     peak = std::max(peak, std::abs(ref.states[i](signal_state) - y_eq));

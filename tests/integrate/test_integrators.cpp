@@ -3,6 +3,7 @@
 // bodies and springs, to an accuracy consistent with its tolerance.
 #include "integrate/integrator.hpp"
 #include "integrate/integration_scenes.hpp"
+#include "integrate/work_precision.hpp"
 
 #include <gtest/gtest.h>
 
@@ -116,4 +117,24 @@ TEST(IntegratorNames, RoundTripAndUnknownNameListsTheKnownOnes) {
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("arkode_dirk"), std::string::npos) << e.what();
   }
+}
+
+// Orders a method does not offer are refused with the ones it does, instead
+// of SUNDIALS substituting another table (ARKODE) or failing with a flag
+// (CVODE).
+TEST(IntegratorNames, OrdersOutsideTheMethodAreRefused) {
+  EXPECT_EQ(parse_integrator_variant("cvode_bdf_q2").order, 2);
+  EXPECT_EQ(parse_integrator_variant("arkode_dirk_q3").order, 3);
+  for (const char* bad : {"cvode_bdf_q7", "arkode_dirk_q9", "arkode_dirk_q1", "arkode_erk_q7",
+                          "arkode_imex_q2", "cvode_adams_q0"}) {
+    try {
+      parse_integrator_variant(bad);
+      ADD_FAILURE() << bad << ": expected std::invalid_argument";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("offers orders"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_THROW(parse_integrator_variant("cvode_bdf_q99999999999"), std::invalid_argument);
+  EXPECT_FALSE(order_available(IntegratorKind::cvode_bdf, 7));
+  EXPECT_TRUE(order_available(IntegratorKind::arkode_erk, 8));
 }

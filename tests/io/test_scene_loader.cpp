@@ -311,6 +311,11 @@ TEST(SceneLoader, ContactDampingMustNotBeNegative) {
   expect_scene_error(minimal_with("cone_angle_rad = 0.12",
                                   "cone_angle_rad = 0.12\nnormal_damping_N_s_per_m = -1.0"),
                      {"contacts.cone.normal_damping_N_s_per_m", "expected a number >= 0 (N s/m)", "got -1"});
+  expect_scene_error(
+      minimal_with("normal = \"hertz\"",
+                   "normal = \"prescribed\"\nprescribed_wheel_load_N = 5.0e4\n"
+                   "normal_damping_N_s_per_m = 1.0e4"),
+      {"contacts.cone.normal_damping_N_s_per_m", "0 with normal = 'prescribed'", "got 10000"});
 }
 
 TEST(SceneLoader, RequiredKeysOfTheChosenContactModel) {
@@ -452,7 +457,12 @@ TEST(SceneLoader, IntegratorChoiceAndOrder) {
   expect_scene_error(minimal_with("t_end_s = 5.0", "t_end_s = 5.0\nintegrator = \"cvode_bfd\""),
                      {"simulation.integrator", "one of", "'cvode_bdf'", "got 'cvode_bfd'"});
   expect_scene_error(minimal_with("t_end_s = 5.0", "t_end_s = 5.0\nintegrator_order = 2.5"),
-                     {"simulation.integrator_order", "an integer 0-12", "got 2.5"});
+                     {"simulation.integrator_order", "an order arkode_dirk offers: 2, 3, 4, 5",
+                      "got 2.5"});
+  expect_scene_error(minimal_with("t_end_s = 5.0",
+                                  "t_end_s = 5.0\nintegrator = \"cvode_bdf\"\nintegrator_order = 7"),
+                     {"simulation.integrator_order", "an order cvode_bdf offers: 1, 2, 3, 4, 5",
+                      "got 7"});
 }
 
 TEST(SceneLoader, MissingFileIsReported) {
