@@ -20,7 +20,7 @@ struct CommonArgs {
   std::string scene;
   SceneOverrides overrides;
   std::string out_dir = "out";
-  std::string solver = "dense";
+  std::string solver = "auto";
   double hunting_band_hz = 20.0;
 };
 
@@ -33,9 +33,10 @@ void add_common(CLI::App* cmd, CommonArgs& a) {
 }
 
 void add_solver(CLI::App* cmd, CommonArgs& a) {
-  cmd->add_option("--solver", a.solver, "eigen-solver: dense (all modes) or arpack "
-                                        "(shift-invert near the hunting band)")
-      ->check(CLI::IsMember({"dense", "arpack"}))
+  cmd->add_option("--solver", a.solver,
+                  "eigen-solver: dense (all modes), arpack (shift-invert near the hunting "
+                  "band) or auto (dense below 150 states, ARPACK from there)")
+      ->check(CLI::IsMember({"auto", "dense", "arpack"}))
       ->capture_default_str();
   cmd->add_option("--hunting-band", a.hunting_band_hz,
                   "highest mode frequency (Hz) that decides stability; faster unstable modes "
@@ -45,7 +46,9 @@ void add_solver(CLI::App* cmd, CommonArgs& a) {
 
 StabilityOptions stability_options(const CommonArgs& a) {
   StabilityOptions o;
-  o.solver = a.solver == "arpack" ? EigenSolverKind::arpack : EigenSolverKind::dense;
+  o.solver = a.solver == "arpack"  ? EigenSolverKind::arpack
+             : a.solver == "dense" ? EigenSolverKind::dense
+                                   : EigenSolverKind::automatic;
   o.max_frequency_hz = a.hunting_band_hz;
   return o;
 }
@@ -131,7 +134,8 @@ void run_eigen(const CommonArgs& a, double max_hz) {
     for (const std::string& r : p.linear.removed_states) std::cout << ' ' << r;
     std::cout << ")";
   }
-  std::cout << ", " << p.modes.size() << " eigenvalues (" << a.solver << ") in " << p.seconds
+  std::cout << ", " << p.modes.size() << " eigenvalues (" << eigen_solver_name(p.solver_used)
+            << ") in " << p.seconds
             << " s\n";
   std::cout << "  real [1/s]     freq [Hz]   damping    residual   mode\n";
   for (const ModeReport& m : p.modes) {
@@ -145,7 +149,7 @@ void run_eigen(const CommonArgs& a, double max_hz) {
   write_file_atomically(path, [&](std::ostream& out) {
     JsonWriter j(out);
     j.begin_object().field("scene", s.model.name).field("speed_m_s", p.speed_m_per_s);
-    j.field("eigen_solver", a.solver).field("states", int(p.linear.A.rows()));
+    j.field("eigen_solver", eigen_solver_name(p.solver_used)).field("states", int(p.linear.A.rows()));
     j.key("removed_cyclic_states").begin_array();
     for (const std::string& r : p.linear.removed_states) j.value(r);
     j.end_array().key("modes").begin_array();
@@ -172,7 +176,9 @@ void run_critical_speed(const CommonArgs& a, CriticalSpeedOptions opt) {
   std::cerr << "critical speed of " << s.model.name << " between " << opt.from_m_per_s
             << " and " << opt.to_m_per_s << " m/s (grid " << opt.grid_step_m_per_s << " m/s)\n";
   const CriticalSpeedResult r = find_critical_speed(s.model, s.equilibrium.state, opt);
-  const StabilityFiles files = write_stability_results(s.model, r, prefix_for(a, s.model), a.solver);
+  const std::string solver =
+      r.grid.empty() ? a.solver : eigen_solver_name(r.grid.front().solver_used);
+  const StabilityFiles files = write_stability_results(s.model, r, prefix_for(a, s.model), solver);
   std::cout << std::setprecision(6);
   if (r.unstable_at_start) {
     std::cout << s.model.name << ": already unstable at " << r.from_m_per_s << " m/s\n";

@@ -18,8 +18,22 @@ Model model_at_speed(const Model& base, double speed_m_per_s) {
   return m;
 }
 
+std::string eigen_solver_name(EigenSolverKind kind) {
+  switch (kind) {
+    case EigenSolverKind::automatic: return "auto";
+    case EigenSolverKind::dense: return "dense";
+    case EigenSolverKind::arpack: return "arpack";
+  }
+  return "unknown";
+}
+
+EigenSolverKind resolved_solver(EigenSolverKind kind, int n_states) {
+  if (kind != EigenSolverKind::automatic) return kind;
+  return n_states >= kArpackFromStates ? EigenSolverKind::arpack : EigenSolverKind::dense;
+}
+
 std::vector<EigenPair> solve_eigen(const Eigen::MatrixXd& A, const StabilityOptions& options) {
-  if (options.solver == EigenSolverKind::dense) return eigen_dense(A);
+  if (resolved_solver(options.solver, int(A.rows())) == EigenSolverKind::dense) return eigen_dense(A);
   ArpackOptions a;
   a.shift = options.arpack_shift;
   a.n_eigenvalues = std::min(options.arpack_eigenvalues, int(A.rows()) - 3);
@@ -52,6 +66,7 @@ StabilityPoint SpeedStability::at(double speed_m_per_s) {
   LinearizationOptions lin_opt;
   lin_opt.time_s = options_.time_s;
   p.linear = linearize(model, p.equilibrium.state, lin_opt);
+  p.solver_used = resolved_solver(options_.solver, int(p.linear.A.rows()));
   p.modes = describe_modes(model, p.linear, solve_eigen(p.linear.A, options_));
   p.least_stable = least_stable_mode(p.modes, options_.max_frequency_hz);
   for (int i = 0; i < int(p.modes.size()); ++i)

@@ -59,3 +59,19 @@ TEST(EigenOnVehicle, ThesisBogieCriticalSpeedBetweenTimeDomainRuns) {
   const double bogie_L = wheelset_L * std::sqrt(1.0 + (1.5 / 0.75) * (1.5 / 0.75));
   EXPECT_NEAR(r.critical_speed_m_per_s / f, bogie_L, 0.1 * bogie_L);
 }
+
+// auto picks dense below 150 linear states (the thesis vehicle: 78) and
+// ARPACK from 150, the crossover measured by analysis/bench_eigen.
+TEST(EigenOnVehicle, AutomaticSolverChoice) {
+  EXPECT_EQ(resolved_solver(EigenSolverKind::automatic, 78), EigenSolverKind::dense);
+  EXPECT_EQ(resolved_solver(EigenSolverKind::automatic, 149), EigenSolverKind::dense);
+  EXPECT_EQ(resolved_solver(EigenSolverKind::automatic, 150), EigenSolverKind::arpack);
+  EXPECT_EQ(resolved_solver(EigenSolverKind::dense, 500), EigenSolverKind::dense);
+  EXPECT_EQ(resolved_solver(EigenSolverKind::arpack, 10), EigenSolverKind::arpack);
+  const PreparedScene s =
+      prepare_scene(std::string(RAILSTAB_CASES_DIR) + "/thesis_vehicle_tangent.toml", {});
+  SpeedStability stability(s.model, s.equilibrium.state, StabilityOptions{});
+  const StabilityPoint p = stability.at(60.0);
+  EXPECT_EQ(p.solver_used, EigenSolverKind::dense);
+  EXPECT_EQ(p.modes.size(), size_t(p.linear.A.rows()));  // all modes
+}
