@@ -34,6 +34,9 @@ template <class T> struct WheelContact {
   T penetration_m{};      // delta (<= 0: no contact, zero force)
   T normal_force_N{};
   T elastic_normal_force_N{};  // the Hertz (or prescribed) part, without damping
+  // In contact: Hertz plus damping before clipping at zero (negative when
+  // the damper would pull: the wheel is unloading faster than it can).
+  T unclipped_normal_force_N{};
   T rolling_radius_m{};
   T semi_axis_a_m{}, semi_axis_b_m{};
   T creep_x{}, creep_y{}, creep_spin_per_m{};
@@ -111,15 +114,18 @@ WheelContact<T> evaluate_wheel_contact(const ModelContact& contact, const BodyMo
   T& elastic_N = out.elastic_normal_force_N;
   elastic_N = T(0);  // (an AutoDiffScalar's T{} leaves the value unset)
   out.normal_force_N = T(0);
+  out.unclipped_normal_force_N = T(0);
   if (spec.normal == NormalForceKind::prescribed) {
     elastic_N = T(spec.prescribed_wheel_load_N);
     out.normal_force_N = elastic_N;
   } else if (in_contact) {
     elastic_N = T(shape.stiffness * pow(out.penetration_m, 1.5));
     out.normal_force_N = elastic_N;
+    out.unclipped_normal_force_N = elastic_N;
     if (spec.normal_damping_N_s_per_m > 0.0) {
       const T penetration_rate = -slip_velocity().dot(nu_I);
       out.normal_force_N += T(spec.normal_damping_N_s_per_m) * penetration_rate;
+      out.unclipped_normal_force_N = out.normal_force_N;
       if (value_of(out.normal_force_N) < 0.0) out.normal_force_N = T(0);  // never pulls
     }
   }

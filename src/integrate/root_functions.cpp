@@ -33,9 +33,10 @@ RootFunctionSet::RootFunctionSet(const Model& model) : model_(&model) {
   // load and no creep, evaluate_wheel_contact stops after the geometry.
   geometry_only_ = model.contacts;
   for (ModelContact& c : geometry_only_) {
+    c.spec.tangential = TangentialForceKind::none;
+    if (c.spec.normal_damping_N_s_per_m > 0.0) continue;  // needs the force law
     c.spec.normal = NormalForceKind::prescribed;
     c.spec.prescribed_wheel_load_N = 0.0;
-    c.spec.tangential = TangentialForceKind::none;
   }
 }
 
@@ -53,9 +54,13 @@ void RootFunctionSet::evaluate(double t_s, const Eigen::Ref<const Eigen::VectorX
       g[i] = f.clearance_m * f.clearance_m - x(f.state) * x(f.state);
     } else {
       const ModelContact& c = geometry_only_[size_t(model_->bodies[size_t(f.body)].contact)];
-      const double penetration =
-          evaluate_wheel_contact(c, motions[size_t(f.body)], f.side, model_->speed_m_per_s)
-              .penetration_m;
+      const WheelContact<double> w =
+          evaluate_wheel_contact(c, motions[size_t(f.body)], f.side, model_->speed_m_per_s);
+      const double penetration = w.penetration_m;
+      if (c.spec.normal_damping_N_s_per_m > 0.0 && penetration > 0.0) {
+        g[i] = w.unclipped_normal_force_N != 0.0 ? w.unclipped_normal_force_N : -1e-20;
+        continue;
+      }
       // The penetration is a difference of two radii near 0.45 m, quantised
       // to ~1e-16 m, so it is exactly zero on a short plateau around a
       // crossing; SUNDIALS rejects a root function that stays exactly zero

@@ -4,12 +4,16 @@
 //    coordinate: a validity limit, the run stops where it reaches zero;
 //  - wheel contact, g = penetration (m) of every Hertz wheel: lift-off
 //    (g falls through zero) and touch-down (g rises through zero) are events
-//    the run records and goes on through, or stops at on request.
+//    the run records and goes on through, or stops at on request. With
+//    contact damping the normal force (Hertz plus damper, before it is
+//    clipped at zero) can vanish while the wheel still penetrates, so there
+//    g = that force (N) while penetrating and the penetration (m, <= 0)
+//    otherwise: the sign is what counts, and it changes where the force does.
 //
 // The penetration is the one evaluate_rhs uses (the same
 // evaluate_wheel_contact), computed from the geometry alone: the contacts are
-// evaluated with no normal-force law and no creep, so a root evaluation costs
-// the body kinematics, not a full right-hand side.
+// evaluated with no creep and, without damping, no normal-force law, so a
+// root evaluation costs the body kinematics, not a full right-hand side.
 #include "model/model.hpp"
 
 #include <Eigen/Dense>

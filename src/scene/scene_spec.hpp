@@ -84,9 +84,9 @@ struct ContactSpec {
   // the wheel is in contact; the normal force never pulls (clipped at 0).
   // The thesis has none (default 0): its wheel-rail vertical modes are then
   // damped only through the creep forces and can go unstable in curves.
-  // Lift-off events (root functions) are located where the penetration
-  // crosses zero; with damping the force can reach zero slightly earlier.
-  // Hertz normal force only.
+  // Lift-off events are then located where the (unclipped) normal force
+  // crosses zero, which can be before the penetration does. Hertz normal
+  // force only.
   double normal_damping_N_s_per_m = 0.0;
   // Validity limit of the flangeless contact models: a wheelset whose lateral
   // shift exceeds it would be in flange contact, which is not modelled, so the

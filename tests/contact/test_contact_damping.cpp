@@ -2,13 +2,16 @@
 // its exact linearisation against a closed form, and AD against central
 // differences with it switched on.
 #include "cli/scene_setup.hpp"
+#include "integrate/integrator.hpp"
 #include "linear/jacobian.hpp"
+#include "model/equations_of_motion.hpp"
 #include "stability/speed_analysis.hpp"
 #include "verify/verification.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <optional>
@@ -116,4 +119,53 @@ TEST(ContactDamping, VerifyInTheArcAboveTheCriticalSpeed) {
   EXPECT_GT(r.fitted_real_per_s, 0.0);
   EXPECT_LT(r.frequency_difference_relative, 0.01);
   EXPECT_LT(r.real_difference_relative, 0.05);
+}
+
+// With damping, a wheel that unloads fast loses its normal force before it
+// leaves the rail: the lift-off event is where the force (Hertz plus damper,
+// unclipped) crosses zero, at a positive penetration. extreme_lift_off
+// throws wheelset2's left wheel up at ~0.67 m/s from a penetration of 30 um;
+// with 5e3 N s/m the damper cancels the Hertz force at 10.8 um, at
+// t = 2.91e-5 s (without damping the wheel leaves at 4.59e-5 s, at zero
+// penetration). 3e4 N s/m would cancel it already at t = 0 (reported as out
+// of contact in the initial state).
+TEST(ContactDamping, LiftOffEventWhereTheForceVanishes) {
+  std::ifstream in(std::string(RAILSTAB_CASES_DIR) + "/extreme_lift_off.toml");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string scene = text.str();
+  const std::string anchor = "spin_creepage = true\n";
+  ASSERT_NE(scene.find(anchor), std::string::npos);
+  scene.insert(scene.find(anchor) + anchor.size(), "normal_damping_N_s_per_m = 5.0e3\n");
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("railstab_lift_off_damped_" + std::to_string(::getpid()) + ".toml");
+  std::ofstream(path) << scene;
+  const PreparedScene s = prepare_scene(path.string(), {});
+  std::filesystem::remove(path);
+
+  IntegrationOptions o = integration_options_for(s.spec.simulation);
+  o.t_end_s = 0.01;
+  o.relative_tolerance = 1e-9;
+  o.absolute_tolerance = 1e-12;
+  o.stop_on_lift_off = true;
+  const Trajectory traj = integrate(s.model, perturbed_initial_state(s), o);
+  ASSERT_NE(traj.stopped_early.find("wheelset2 left wheel lost contact"), std::string::npos)
+      << traj.stopped_early;
+  EXPECT_GT(traj.times_s.back(), 1e-5);
+  EXPECT_LT(traj.times_s.back(), 4.5e-5);
+  // At the stop: the left wheel of wheelset2 still penetrates, and its
+  // unclipped normal force is zero to the root finder's resolution.
+  EvaluationDetails d;
+  rhs(s.model, traj.times_s.back(), traj.states.back(), &d);
+  bool found = false;
+  for (const ContactSnapshot& c : d.contacts) {
+    if (s.model.bodies[size_t(c.body)].name != "wheelset2" || c.wheel.side != 1) continue;
+    found = true;
+    std::printf("[lift-off] %s at t = %.9g s: penetration %.3g m, unclipped force %.3g N\n",
+                traj.stopped_early.c_str(), traj.times_s.back(), c.wheel.penetration_m,
+                c.wheel.unclipped_normal_force_N);
+    EXPECT_GT(c.wheel.penetration_m, 5e-6);
+    EXPECT_LT(std::abs(c.wheel.unclipped_normal_force_N), 1.0);  // N, of ~50 kN
+  }
+  EXPECT_TRUE(found);
 }
