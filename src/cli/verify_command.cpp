@@ -128,6 +128,14 @@ void register_verify_command(CLI::App& app) {
   cmd->add_option("--amplitude", a->options.amplitude_m,
                   "initial lateral amplitude (m) of the body that moves most laterally")
       ->capture_default_str();
+  cmd->add_option("--periods", a->options.periods,
+                  "simulated length in periods of the mode (cut where the uniform track ends)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--settle-periods", a->options.settle_periods,
+                  "periods skipped before the fit window")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--scene-offsets", a->scene_offsets,
                 "start from the scene's initial offsets and rates instead of the mode "
                 "perturbation (e.g. the thesis cases' 1 mm offset of wheelset1)");

@@ -93,13 +93,16 @@ VerificationResult verify_least_stable_mode(const Model& model, const Eigen::Vec
     if (t_b < track_limit_s) track_limit_s = t_b, first_out = model.bodies[size_t(b)].name;
   }
   if (track_limit_s < t_end) {
-    const double needed = (options.settle_periods + 3.0) * period;
+    // At least two periods to fit (a damped sinusoid sampled 50 times a
+    // period is well determined by two).
+    const double needed = (options.settle_periods + 2.0) * period;
     if (track_limit_s < needed) {
       std::ostringstream msg;
       msg << "verify: " << first_out << " leaves the uniform stretch of track (tangent or arc at "
           << "constant cant) it starts on after " << track_limit_s << " s at "
           << model.speed_m_per_s << " m/s, short of the " << needed
-          << " s needed to fit the mode; start inside a longer tangent or arc (--arc-length)";
+          << " s needed to settle and fit two periods of the mode; start inside a longer "
+             "tangent or arc (--arc-length) or settle for fewer periods (--settle-periods)";
       throw std::runtime_error(msg.str());
     }
     t_end = track_limit_s;
