@@ -3,6 +3,7 @@
 // all eigenpairs by eigen_dense against the 12 nearest sigma = 0.5 + 5i by
 // eigen_arpack_shift_invert. Prints the time per call and dense / ARPACK.
 #include "eigen/eigen_analysis.hpp"
+#include "eigen/synthetic_systems.hpp"  // tests/
 
 #include <algorithm>
 #include <chrono>
@@ -17,35 +18,7 @@ namespace {
 using railstab::ArpackOptions;
 using railstab::EigenPair;
 using Complex = std::complex<double>;
-
-Eigen::MatrixXd random_orthogonal(Eigen::Index n, std::mt19937& rng) {
-  std::normal_distribution<double> normal;
-  const Eigen::MatrixXd G = Eigen::MatrixXd::NullaryExpr(n, n, [&] { return normal(rng); });
-  return Eigen::HouseholderQR<Eigen::MatrixXd>(G).householderQ();
-}
-
-Eigen::MatrixXd random_spd(Eigen::Index n, double lo, double hi, std::mt19937& rng) {
-  std::uniform_real_distribution<double> uniform(lo, hi);
-  const Eigen::MatrixXd Q = random_orthogonal(n, rng);
-  const Eigen::VectorXd d = Eigen::VectorXd::NullaryExpr(n, [&] { return uniform(rng); });
-  return Q * d.asDiagonal() * Q.transpose();
-}
-
-// Natural frequencies spread over roughly 0.2..20 rad/s, light damping: the
-// shape of a vehicle's lateral spectrum, with the shift inside it.
-Eigen::MatrixXd damped_mechanical_system(Eigen::Index states, unsigned seed) {
-  std::mt19937 rng(seed);
-  const Eigen::Index dofs = states / 2;
-  const Eigen::MatrixXd M = random_spd(dofs, 1.0, 5.0, rng);
-  const Eigen::MatrixXd K = random_spd(dofs, 0.25, 400.0, rng);
-  const Eigen::MatrixXd C = 0.01 * K + random_spd(dofs, 0.0, 0.1, rng);
-  const Eigen::PartialPivLU<Eigen::MatrixXd> mass(M);
-  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(states, states);
-  A.topRightCorner(dofs, dofs).setIdentity();
-  A.bottomLeftCorner(dofs, dofs) = -mass.solve(K);
-  A.bottomRightCorner(dofs, dofs) = -mass.solve(C);
-  return A;
-}
+using railstab::test::damped_mechanical_system;
 
 // Seconds per call: calls repeated until a batch lasts at least 0.2 s, five
 // batches, median of the batch means (robust to a stray slow batch).

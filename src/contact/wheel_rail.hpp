@@ -100,13 +100,15 @@ WheelContact<T> evaluate_wheel_contact(const ModelContact& contact, const BodyMo
                         contact.materials.effective_modulus_Pa);
   }
   // Velocity of the wheel material at P (the rail is at rest): the slip
-  // velocity of the creepages, and along -nu the penetration rate.
-  const auto slip_velocity = [&] {
+  // velocity of the creepages, and along -nu the penetration rate. Only
+  // when creep or contact damping needs it.
+  Vec3<T> v_slip_I = Vec3<T>::Zero();
+  if (spec.tangential != TangentialForceKind::none || spec.normal_damping_N_s_per_m > 0.0) {
     const Vec3<T> w_T = to_scalar<T>(ws.track->w_WT_T);
     const Vec3<T> v_T = to_scalar<T>(ws.track->v_WT_T);
     const Vec3<T> v_centre_I = R_IT * (v_T + w_T.cross(w) + ws.qd.template head<3>());
-    return Vec3<T>(v_centre_I + ws.w_B_I.cross(out.point_I));
-  };
+    v_slip_I = v_centre_I + ws.w_B_I.cross(out.point_I);
+  }
   // The normal load (Hertz plus damping, never pulling) sizes the contact
   // ellipse, so the creep coefficients go to zero with it, continuously,
   // whether the wheel lifts off or the damper unloads it. The elastic part
@@ -123,7 +125,7 @@ WheelContact<T> evaluate_wheel_contact(const ModelContact& contact, const BodyMo
     out.normal_force_N = elastic_N;
     out.unclipped_normal_force_N = elastic_N;
     if (spec.normal_damping_N_s_per_m > 0.0) {
-      const T penetration_rate = -slip_velocity().dot(nu_I);
+      const T penetration_rate = -v_slip_I.dot(nu_I);
       out.normal_force_N += T(spec.normal_damping_N_s_per_m) * penetration_rate;
       out.unclipped_normal_force_N = out.normal_force_N;
       if (value_of(out.normal_force_N) < 0.0) out.normal_force_N = T(0);  // never pulls
@@ -135,7 +137,6 @@ WheelContact<T> evaluate_wheel_contact(const ModelContact& contact, const BodyMo
     return out;
 
   // Creepages.
-  const Vec3<T> v_slip_I = slip_velocity();
   const T V = T(speed_m_per_s);
   out.creep_x = v_slip_I.dot(l_I) / V;
   out.creep_y = v_slip_I.dot(t_I) / V;

@@ -67,31 +67,38 @@ std::vector<ModeReport> describe_modes(const Model& model, const LinearModel& li
   return modes;
 }
 
-int least_stable_mode(const std::vector<ModeReport>& modes, double max_frequency_hz) {
+namespace {
+
+// Largest real part among the eligible non-neutral modes at or below the
+// frequency cap; among equal real parts the oscillatory one.
+template <class Eligible>
+int least_stable_where(const std::vector<ModeReport>& modes, double max_frequency_hz,
+                       Eligible eligible) {
   int best = -1;
   for (int i = 0; i < int(modes.size()); ++i) {
-    if (modes[i].neutral || modes[i].frequency_hz > max_frequency_hz) continue;
+    const ModeReport& m = modes[size_t(i)];
+    if (m.neutral || m.frequency_hz > max_frequency_hz || !eligible(m)) continue;
     if (best < 0) {
       best = i;
       continue;
     }
-    const double a = modes[i].eigenvalue.real(), b = modes[best].eigenvalue.real();
-    if (a > b || (a == b && modes[i].eigenvalue.imag() > modes[best].eigenvalue.imag())) best = i;
+    const double a = m.eigenvalue.real(), b = modes[size_t(best)].eigenvalue.real();
+    if (a > b || (a == b && m.eigenvalue.imag() > modes[size_t(best)].eigenvalue.imag())) best = i;
   }
   return best;
 }
 
+}  // namespace
+
+int least_stable_mode(const std::vector<ModeReport>& modes, double max_frequency_hz) {
+  return least_stable_where(modes, max_frequency_hz, [](const ModeReport&) { return true; });
+}
+
 int least_stable_lateral_mode(const std::vector<ModeReport>& modes, double max_frequency_hz,
                               double min_lateral_share) {
-  std::vector<ModeReport> candidates;
-  std::vector<int> index;
-  for (int i = 0; i < int(modes.size()); ++i)
-    if (modes[i].frequency_hz > 0.0 && modes[i].lateral_share >= min_lateral_share) {
-      candidates.push_back(modes[i]);
-      index.push_back(i);
-    }
-  const int best = least_stable_mode(candidates, max_frequency_hz);
-  return best < 0 ? -1 : index[size_t(best)];
+  return least_stable_where(modes, max_frequency_hz, [&](const ModeReport& m) {
+    return m.frequency_hz > 0.0 && m.lateral_share >= min_lateral_share;
+  });
 }
 
 }  // namespace railstab

@@ -1,6 +1,7 @@
 // Eigen analysis: dense against closed forms, ARPACK shift-invert against
 // dense, modal quantities, and mode tracking through a frequency crossing.
 #include "eigen/eigen_analysis.hpp"
+#include "eigen/synthetic_systems.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,46 +12,11 @@
 #include <stdexcept>
 
 using namespace railstab;
+using namespace railstab::test;
 using Complex = std::complex<double>;
 
 namespace {
 
-// x' = A x with x = [q; u]: q' = u, M u' = -K q - C u.
-Eigen::MatrixXd first_order_form(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K,
-                                 const Eigen::MatrixXd& C) {
-  const Eigen::Index dofs = M.rows();
-  const Eigen::PartialPivLU<Eigen::MatrixXd> mass(M);
-  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * dofs, 2 * dofs);
-  A.topRightCorner(dofs, dofs).setIdentity();
-  A.bottomLeftCorner(dofs, dofs) = -mass.solve(K);
-  A.bottomRightCorner(dofs, dofs) = -mass.solve(C);
-  return A;
-}
-
-Eigen::MatrixXd random_orthogonal(Eigen::Index n, std::mt19937& rng) {
-  std::normal_distribution<double> normal;
-  const Eigen::MatrixXd G = Eigen::MatrixXd::NullaryExpr(n, n, [&] { return normal(rng); });
-  return Eigen::HouseholderQR<Eigen::MatrixXd>(G).householderQ();
-}
-
-// Q diag(d) Q^T with d uniform in [lo, hi]: SPD with a known spread.
-Eigen::MatrixXd random_spd(Eigen::Index n, double lo, double hi, std::mt19937& rng) {
-  std::uniform_real_distribution<double> uniform(lo, hi);
-  const Eigen::MatrixXd Q = random_orthogonal(n, rng);
-  const Eigen::VectorXd d = Eigen::VectorXd::NullaryExpr(n, [&] { return uniform(rng); });
-  return Q * d.asDiagonal() * Q.transpose();
-}
-
-// A lightly damped mechanical system with natural frequencies spread over
-// roughly 0.2..20 rad/s, so that sigma = 0.5 + 5i sits inside the spectrum.
-Eigen::MatrixXd damped_mechanical_system(Eigen::Index states, unsigned seed) {
-  std::mt19937 rng(seed);
-  const Eigen::Index dofs = states / 2;
-  const Eigen::MatrixXd M = random_spd(dofs, 1.0, 5.0, rng);
-  const Eigen::MatrixXd K = random_spd(dofs, 0.25, 400.0, rng);
-  const Eigen::MatrixXd C = 0.01 * K + random_spd(dofs, 0.0, 0.1, rng);
-  return first_order_form(M, K, C);
-}
 
 std::vector<Complex> values_nearest(const std::vector<EigenPair>& pairs, Complex sigma,
                                     std::size_t count) {

@@ -69,4 +69,30 @@ inline SceneSpec two_body_oscillator(const TrackSpec& track, double speed_m_per_
   return s;
 }
 
+// One thesis knife-edge wheelset (Table 5.1, 5.7) alone on `track`, free in
+// y, z, roll, spin and yaw (x held: it moves with its track frame), no
+// suspension: nothing damps its vertical bouncing on the Hertz contact.
+inline SceneSpec lone_knife_edge_wheelset(double speed_m_per_s = 20.0,
+                                          const TrackSpec& track = straight_track()) {
+  SceneSpec s;
+  s.name = "lone_wheelset";
+  s.speed_m_per_s = speed_m_per_s;
+  s.reference_arc_length_m = 50.0;
+  s.track = track;
+  s.preload = PreloadMode::none;
+  ContactSpec c;
+  c.name = "knife";
+  s.contacts.push_back(c);
+  BodySpec w;
+  w.name = "wheelset";
+  w.is_wheelset = true;
+  w.mass_kg = 1500.0;
+  w.inertia_kg_m2 = Eigen::Vector3d(799.35, 93.75, 799.35);
+  w.position_m = Eigen::Vector3d(0.0, 0.0, 0.45);
+  w.free = {false, true, true, true, true, true};
+  w.contact = "knife";
+  s.bodies.push_back(w);
+  return s;
+}
+
 }  // namespace railstab::test

@@ -14,30 +14,6 @@ using namespace railstab;
 
 namespace {
 
-// One thesis knife-edge wheelset (Table 5.1, 5.7) alone on `track`, free in
-// y, z, roll, spin and yaw; x is held (moves with its track frame).
-SceneSpec lone_wheelset(const TrackSpec& track, double speed) {
-  SceneSpec s;
-  s.name = "lone_wheelset";
-  s.speed_m_per_s = speed;
-  s.reference_arc_length_m = 50.0;
-  s.track = track;
-  s.preload = PreloadMode::none;
-  ContactSpec c;
-  c.name = "knife";
-  s.contacts.push_back(c);
-  BodySpec w;
-  w.name = "wheelset";
-  w.is_wheelset = true;
-  w.mass_kg = 1500.0;
-  w.inertia_kg_m2 = Eigen::Vector3d(799.35, 93.75, 799.35);
-  w.position_m = Eigen::Vector3d(0.0, 0.0, 0.45);
-  w.free = {false, true, true, true, true, true};
-  w.contact = "knife";
-  s.bodies.push_back(w);
-  return s;
-}
-
 TrackSpec arc_track(double radius_m) {
   TrackSpec t;
   t.start_curvature_per_m = 1.0 / radius_m;
@@ -92,7 +68,7 @@ double knife_edge_effective_conicity() {
 // shift it; at 5 m/s and R = 1000 m they stay well within 1 %.
 TEST(Equilibrium, FreeWheelsetInArcNearPureRollingShift) {
   const double R = 1000.0;
-  const Model m = build_model(lone_wheelset(arc_track(R), 5.0));
+  const Model m = build_model(test::lone_knife_edge_wheelset(5.0, arc_track(R)));
   const EquilibriumResult eq = solve_equilibrium(m, lowered_nominal_state(m));
   const double y0 = 0.45 * 0.75 / (knife_edge_effective_conicity() * R);
   const double y = eq.state(m.bodies[0].state_index[1]);
@@ -105,7 +81,7 @@ TEST(Equilibrium, FreeWheelsetInArcNearPureRollingShift) {
 // A scene with no equilibrium fails with a clear message: 150 m/s in an
 // unbanked 150 m curve (15 g lateral) lifts the wheelset off the rails.
 TEST(Equilibrium, NoEquilibriumGivesClearError) {
-  const Model m = build_model(lone_wheelset(arc_track(150.0), 150.0));
+  const Model m = build_model(test::lone_knife_edge_wheelset(150.0, arc_track(150.0)));
   try {
     solve_equilibrium(m, lowered_nominal_state(m));
     FAIL() << "expected no equilibrium";
@@ -127,7 +103,7 @@ TEST(Equilibrium, NoEquilibriumGivesClearError) {
 TEST(Hunting, KnifeEdgeWheelsetApproachesKlingel) {
   TrackSpec straight;
   straight.segments.push_back({TrackSegmentKind::tangent, 2000.0, 0.0, 0.0});
-  const Model m = build_model(lone_wheelset(straight, 2.0));
+  const Model m = build_model(test::lone_knife_edge_wheelset(2.0, straight));
   const EquilibriumResult eq = solve_equilibrium(m, lowered_nominal_state(m));
   SpeedStability stability(m, eq.state);
   const StabilityPoint p = stability.at(2.0);
