@@ -9,7 +9,7 @@
 // 1e-9 (the difference is printed). Adams is the cheapest accurate method
 // here (work-precision study), which keeps the whole run near a minute.
 //   build/bench_integrators [cases-dir]
-#include "cli/scene_setup.hpp"
+#include "setup/prepare_scene.hpp"
 #include "integrate/work_precision.hpp"
 
 #include <chrono>
@@ -35,10 +35,10 @@ void bench_scene(const std::string& path) {
   s.reference_check_kind = IntegratorKind::cvode_bdf;
   s.reference_check_rtol = 1e-9;
   s.cpu_budget_per_run_s = 8.0;
-  const ReferenceSolution ref = compute_reference(model, x0, s);
+  const ReferenceSolution ref = compute_reference(model, model.scene_speed_m_per_s, x0, s);
   std::printf("%s: %d states, %.0f m/s, %.0f s; reference %s rtol %.0e (CPU %.2f s), "
               "differs from %s rtol %.0e by %.2g\n",
-              model.name.c_str(), model.state_size(), model.speed_m_per_s, s.t_end_s,
+              model.name.c_str(), model.state_size(), model.scene_speed_m_per_s, s.t_end_s,
               integrator_name(ref.kind).c_str(), ref.rtol, ref.cpu_seconds,
               integrator_name(ref.check_kind).c_str(), ref.check_rtol, ref.check_difference);
   std::printf("  %-13s %7s %10s %10s %8s %8s %8s %8s %8s\n", "integrator", "rtol", "error",
@@ -46,7 +46,7 @@ void bench_scene(const std::string& path) {
   for (const IntegratorVariant& v : s.variants) {
     bool reached = false;
     for (double rtol : s.relative_tolerances) {
-      const WorkPrecisionRun r = run_against_reference(model, x0, s, v, rtol, ref);
+      const WorkPrecisionRun r = run_against_reference(model, model.scene_speed_m_per_s, x0, s, v, rtol, ref);
       if (r.status != "ok") {
         std::printf("  %-13s %7.0e  %s\n", r.label.c_str(), rtol, r.status.c_str());
         break;
@@ -63,7 +63,7 @@ void bench_scene(const std::string& path) {
   // The scene's own integrator and tolerance: what `railstab simulate` runs.
   const SimulationSpec& sim = scene.spec.simulation;
   const WorkPrecisionRun def = run_against_reference(
-      model, x0, s, {sim.integrator, sim.integrator_order}, sim.relative_tolerance, ref);
+      model, scene.speed_m_per_s, x0, s, {sim.integrator, sim.integrator_order}, sim.relative_tolerance, ref);
   std::printf("  scene default: %s rtol %.0e: error %.2g (lateral %.2g), wall %.3f s, real-time "
               "factor %.1f\n",
               def.label.c_str(), sim.relative_tolerance, def.error, def.lateral_error,

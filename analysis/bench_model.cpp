@@ -2,7 +2,7 @@
 // one right-hand side, one AD Jacobian, one forward-difference Jacobian,
 // and a 20 s time-domain run. Prints timings and ratios.
 //   build/bench_model [cases-dir]
-#include "cli/scene_setup.hpp"
+#include "setup/prepare_scene.hpp"
 #include "integrate/integrator.hpp"
 #include "linear/jacobian.hpp"
 #include "linear/linearization.hpp"
@@ -35,17 +35,18 @@ void bench_scene(const std::string& path) {
   const PreparedScene scene = prepare_scene(path, {});
   const Model& model = scene.model;
   const Eigen::VectorXd x = perturbed_initial_state(scene);
-  const auto frames = track_frames_at(model, 0.0);
+  Workspace<double> ws(model);
+  const double V = scene.speed_m_per_s;
   Eigen::VectorXd xdot;
-  const double t_rhs = time_per_call([&] { evaluate_rhs<double>(model, 0.0, frames, x, xdot); });
-  const double t_rhs_frames = time_per_call([&] { xdot = rhs(model, 0.0, x); });
-  const double t_ad = time_per_call([&] { rhs_jacobian_ad(model, 0.0, x); });
-  const double t_fd = time_per_call([&] { rhs_jacobian_forward_difference(model, 0.0, x); });
-  const double t_cd = time_per_call([&] { rhs_jacobian_central_difference(model, 0.0, x); });
+  const double t_rhs = time_per_call([&] { evaluate_rhs<double>(model, ws, 0.0, V, x, xdot); });
+  const double t_rhs_frames = time_per_call([&] { xdot = rhs(model, model.scene_speed_m_per_s, 0.0, x); });
+  const double t_ad = time_per_call([&] { rhs_jacobian_ad(model, model.scene_speed_m_per_s, 0.0, x); });
+  const double t_fd = time_per_call([&] { rhs_jacobian_forward_difference(model, model.scene_speed_m_per_s, 0.0, x); });
+  const double t_cd = time_per_call([&] { rhs_jacobian_central_difference(model, model.scene_speed_m_per_s, 0.0, x); });
   std::printf("%s: %d bodies, %d states\n", model.name.c_str(), int(model.bodies.size()),
               model.state_size());
-  std::printf("  rhs (frames given)        %10.2f us\n", t_rhs * 1e6);
-  std::printf("  rhs (with track frames)   %10.2f us\n", t_rhs_frames * 1e6);
+  std::printf("  rhs (workspace reused)    %10.2f us\n", t_rhs * 1e6);
+  std::printf("  rhs (fresh workspace)     %10.2f us\n", t_rhs_frames * 1e6);
   std::printf("  AD Jacobian               %10.2f us  (%.1f rhs)\n", t_ad * 1e6, t_ad / t_rhs);
   std::printf("  forward-diff Jacobian     %10.2f us  (%.1f rhs)\n", t_fd * 1e6, t_fd / t_rhs);
   std::printf("  5-point central Jacobian  %10.2f us  (%.1f rhs)\n", t_cd * 1e6, t_cd / t_rhs);
@@ -53,7 +54,7 @@ void bench_scene(const std::string& path) {
 
   // Eigen-analysis at the steady state, dense vs ARPACK (16 modes near a
   // lightly damped 3 Hz), and a full critical-speed search.
-  const LinearModel lin = linearize(model, scene.equilibrium.state);
+  const LinearModel lin = linearize(model, model.scene_speed_m_per_s, scene.equilibrium.state);
   StabilityOptions arpack;
   arpack.solver = EigenSolverKind::arpack;
   const double t_dense = time_per_call([&] { eigen_dense(lin.A); });
@@ -66,7 +67,7 @@ void bench_scene(const std::string& path) {
   cs.to_m_per_s = 150.0;
   cs.grid_step_m_per_s = 2.5;
   CriticalSpeedResult r;
-  const double t_search = time_per_call([&] { r = find_critical_speed(model, scene.equilibrium.state, cs); });
+  const double t_search = time_per_call([&] { r = find_critical_speed(model, scene.equilibrium.state, scene.speed_m_per_s, cs); });
   std::printf("  critical-speed search     %10.3f s   (%d speeds, V_crit %s%.2f m/s)\n", t_search,
               r.evaluations, r.critical_speed_found ? "" : "none; ",
               r.critical_speed_found ? r.critical_speed_m_per_s : 0.0);
@@ -75,7 +76,7 @@ void bench_scene(const std::string& path) {
   IntegrationOptions opt = integration_options_for(scene.spec.simulation);
   opt.t_end_s = 20.0;
   opt.output_interval_s = 0.01;
-  const Trajectory traj = integrate(model, x, opt);
+  const Trajectory traj = integrate(model, model.scene_speed_m_per_s, x, opt);
   const double simulated = traj.times_s.back();
   std::printf("  20 s run (%s, rtol %.0e): wall %.3f s, real-time factor %.1f, "
               "%ld steps, %ld rhs, %ld Jacobians%s\n",

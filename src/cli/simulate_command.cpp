@@ -1,6 +1,6 @@
 #include "cli/simulate_command.hpp"
 
-#include "cli/scene_setup.hpp"
+#include "setup/prepare_scene.hpp"
 #include "integrate/error_estimate.hpp"
 #include "integrate/integrator.hpp"
 #include "integrate/work_precision.hpp"
@@ -48,14 +48,14 @@ IntegrationOptions integration_options(const SimulateArgs& args, const Simulatio
 
 // The run summary as JSON text, rendered before any file is written so a
 // failure here leaves no partial set of outputs.
-std::string run_json(const Model& model, const IntegrationOptions& opt, const Trajectory& traj,
+std::string run_json(const Model& model, double speed_m_per_s, const IntegrationOptions& opt, const Trajectory& traj,
                      const std::optional<ErrorEstimate>& error) {
   std::ostringstream out;
   JsonWriter j(out);
   const double simulated = traj.times_s.back() - opt.t_start_s;
   j.begin_object()
       .field("scene", model.name)
-      .field("speed_m_s", model.speed_m_per_s)
+      .field("speed_m_s", speed_m_per_s)
       .field("states", model.state_size())
       .field("integrator", IntegratorVariant{opt.kind, opt.order}.label())
       .field("relative_tolerance", opt.relative_tolerance)
@@ -104,7 +104,7 @@ void run_simulate(const SimulateArgs& args) {
   PreparedScene scene = prepare_scene(args.scene, args.overrides);
   const Model& model = scene.model;
   std::cerr << "scene " << model.name << ": " << model.bodies.size() << " bodies, "
-            << model.state_size() << " states, speed " << model.speed_m_per_s << " m/s\n"
+            << model.state_size() << " states, speed " << scene.speed_m_per_s << " m/s\n"
             << "static equilibrium: " << scene.equilibrium.iterations
             << " Newton iterations, residual " << scene.equilibrium.max_acceleration << "\n";
 
@@ -113,7 +113,7 @@ void run_simulate(const SimulateArgs& args) {
     std::cerr << "  t = " << t << " / " << opt.t_end_s << " s\n";
   };
   const Eigen::VectorXd x0 = perturbed_initial_state(scene);
-  const Trajectory traj = integrate(model, x0, opt);
+  const Trajectory traj = integrate(model, scene.speed_m_per_s, x0, opt);
   if (!traj.stopped_early.empty())
     std::cout << "stopped early: " << traj.stopped_early << "\n";
   if (!traj.events.empty())
@@ -122,25 +122,25 @@ void run_simulate(const SimulateArgs& args) {
   std::optional<ErrorEstimate> error;
   if (args.estimate_error) {
     std::cerr << "error estimate: the same run at 100x tighter tolerances\n";
-    error = estimate_integration_error(model, x0, opt, traj);
+    error = estimate_integration_error(model, scene.speed_m_per_s, x0, opt, traj);
   }
 
   const std::string base =
       (std::filesystem::path(args.out_dir) / (model.name + "_" +
-                                              std::to_string(int(std::lround(model.speed_m_per_s))) +
+                                              std::to_string(int(std::lround(scene.speed_m_per_s))) +
                                               "mps")).string();
   const std::string csv = args.csv.empty() ? base + ".csv" : args.csv;
   const std::string roll_csv = base + "_absolute_roll.csv";
   const std::string json = base + "_run.json";
   // Data files first (each written atomically; the JSON text is rendered
   // before any of them), the plots, which are views of the CSVs, last.
-  const std::string summary = run_json(model, opt, traj, error);
-  write_trajectory_csv(csv, model, traj);
-  write_absolute_roll_csv(roll_csv, model, traj);
+  const std::string summary = run_json(model, scene.speed_m_per_s, opt, traj, error);
+  write_trajectory_csv(csv, model, scene.speed_m_per_s, traj);
+  write_absolute_roll_csv(roll_csv, model, scene.speed_m_per_s, traj);
   write_file_atomically(json, [&](std::ostream& out) { out << summary; });
   for (const std::string& f : {csv, roll_csv, json}) std::cout << "wrote " << f << "\n";
   if (args.plots)
-    for (const std::string& png : plot_time_histories(model, csv, roll_csv, base))
+    for (const std::string& png : plot_time_histories(model, scene.speed_m_per_s, csv, roll_csv, base))
       std::cout << "wrote " << png << "\n";
   const double simulated = traj.times_s.back() - opt.t_start_s;
   std::cout << "integrator " << IntegratorVariant{opt.kind, opt.order}.label() << " rtol "

@@ -1,6 +1,6 @@
 #include "cli/stability_commands.hpp"
 
-#include "cli/scene_setup.hpp"
+#include "setup/prepare_scene.hpp"
 #include "io/json_writer.hpp"
 #include "io/output_files.hpp"
 #include "model/equations_of_motion.hpp"
@@ -62,17 +62,17 @@ void run_equilibrium(const CommonArgs& a) {
   const PreparedScene s = prepare_scene(a.scene, a.overrides);
   const Model& model = s.model;
   EvaluationDetails details;
-  rhs(model, 0.0, s.equilibrium.state, &details);
+  rhs(model, s.speed_m_per_s, 0.0, s.equilibrium.state, &details);
   Eigen::MatrixXd q6, qd6;
-  model.full_coordinates(0.0, s.equilibrium.state, q6, qd6);
+  model.full_coordinates(0.0, s.speed_m_per_s, s.equilibrium.state, q6, qd6);
   const std::string path = prefix_for(a, model) + "_equilibrium.json";
   std::cout << std::setprecision(6) << "equilibrium of " << model.name << " at "
-            << model.speed_m_per_s << " m/s: " << s.equilibrium.iterations
+            << s.speed_m_per_s << " m/s: " << s.equilibrium.iterations
             << " Newton iterations, max acceleration residual " << s.equilibrium.max_acceleration
             << "\n";
   write_file_atomically(path, [&](std::ostream& out) {
     JsonWriter j(out);
-    j.begin_object().field("scene", model.name).field("speed_m_s", model.speed_m_per_s);
+    j.begin_object().field("scene", model.name).field("speed_m_s", s.speed_m_per_s);
     j.field("newton_iterations", s.equilibrium.iterations)
         .field("max_acceleration_residual", s.equilibrium.max_acceleration);
     j.key("bodies").begin_array();
@@ -80,7 +80,7 @@ void run_equilibrium(const CommonArgs& a) {
       j.begin_object().field("name", model.bodies[b].name);
       for (int c = 0; c < 6; ++c) {
         const double offset = q6(c, b) - model.bodies[b].nominal_q(c);
-        if (c == int(CoordinateIndex::pitch) && model.bodies[b].is_wheelset) {
+        if (c == int(CoordinateIndex::pitch) && model.bodies[b].wheelset()) {
           j.field("spin_rate_rad_s", qd6(c, b));
           continue;
         }
@@ -125,8 +125,8 @@ void run_equilibrium(const CommonArgs& a) {
 // --- eigen ---------------------------------------------------------------------
 void run_eigen(const CommonArgs& a, double max_hz) {
   const PreparedScene s = prepare_scene(a.scene, a.overrides);
-  SpeedStability stability(s.model, s.equilibrium.state, stability_options(a));
-  const StabilityPoint p = stability.at(s.model.speed_m_per_s);
+  SpeedStability stability(s.model, s.equilibrium.state, s.speed_m_per_s, stability_options(a));
+  const StabilityPoint p = stability.at(s.speed_m_per_s);
   std::cout << s.model.name << " at " << p.speed_m_per_s << " m/s: " << p.linear.A.rows()
             << " states";
   if (!p.linear.removed_states.empty()) {
@@ -175,7 +175,7 @@ void run_critical_speed(const CommonArgs& a, CriticalSpeedOptions opt) {
   opt.progress = [](const std::string& line) { std::cerr << line << "\n"; };
   std::cerr << "critical speed of " << s.model.name << " between " << opt.from_m_per_s
             << " and " << opt.to_m_per_s << " m/s (grid " << opt.grid_step_m_per_s << " m/s)\n";
-  const CriticalSpeedResult r = find_critical_speed(s.model, s.equilibrium.state, opt);
+  const CriticalSpeedResult r = find_critical_speed(s.model, s.equilibrium.state, s.speed_m_per_s, opt);
   const std::string solver =
       r.grid.empty() ? a.solver : eigen_solver_name(r.grid.front().solver_used);
   const StabilityFiles files = write_stability_results(s.model, r, prefix_for(a, s.model), solver);

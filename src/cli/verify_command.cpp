@@ -1,6 +1,6 @@
 #include "cli/verify_command.hpp"
 
-#include "cli/scene_setup.hpp"
+#include "setup/prepare_scene.hpp"
 #include "io/json_writer.hpp"
 #include "io/output_files.hpp"
 #include "report/time_plots.hpp"
@@ -85,11 +85,11 @@ std::string plot_fit(const VerificationResult& r, const std::string& prefix, con
 
 void run_verify(const VerifyArgs& a) {
   const PreparedScene s = prepare_scene(a.scene, a.overrides);
-  std::cerr << "verify " << s.model.name << " at " << s.model.speed_m_per_s
+  std::cerr << "verify " << s.model.name << " at " << s.speed_m_per_s
             << " m/s: eigen-analysis, then two time-domain runs (tolerance and 100x tighter)\n";
   VerificationOptions options = a.options;
   if (a.scene_offsets) options.initial_state = perturbed_initial_state(s);
-  const VerificationResult r = verify_least_stable_mode(s.model, s.equilibrium.state, options);
+  const VerificationResult r = verify_least_stable_mode(s.model, s.speed_m_per_s, s.equilibrium.state, options);
   const std::string prefix =
       (std::filesystem::path(a.out_dir) /
        (s.model.name + "_verify_" + std::to_string(int(std::lround(r.speed_m_per_s))) + "mps"))

@@ -1,6 +1,6 @@
 #include "cli/work_precision_command.hpp"
 
-#include "cli/scene_setup.hpp"
+#include "setup/prepare_scene.hpp"
 #include "integrate/work_precision.hpp"
 #include "io/output_files.hpp"
 #include "report/time_plots.hpp"
@@ -66,7 +66,7 @@ std::vector<std::string> labels_in_order(const WorkPrecisionResult& r) {
 }
 
 // Gnuplot data: one block per integrator (finished runs only), then the plot.
-std::string write_plot(const std::string& prefix, const Model& model, double t_end,
+std::string write_plot(const std::string& prefix, const Model& model, double speed_m_per_s, double t_end,
                        const WorkPrecisionResult& r) {
   const std::string dat = prefix + "_work_precision.dat";
   const std::string png = prefix + "_work_precision.png";
@@ -89,7 +89,7 @@ std::string write_plot(const std::string& prefix, const Model& model, double t_e
   write_file_atomically(gp, [&](std::ostream& out) {
     out << "set terminal pngcairo size 900,600 font 'Sans,10' noenhanced\n"
         << "set output '" << png << "'\n"
-        << "set title '" << model.name << " at " << model.speed_m_per_s << " m/s, " << t_end
+        << "set title '" << model.name << " at " << speed_m_per_s << " m/s, " << t_end
         << " s: work-precision (reference " << integrator_name(r.reference.kind) << " rtol "
         << number(r.reference.rtol) << ")'\n"
         << "set logscale xy\nset grid\nset key outside right\n"
@@ -111,11 +111,11 @@ std::string write_plot(const std::string& prefix, const Model& model, double t_e
   return png;
 }
 
-void write_markdown(const std::string& path, const Model& model, double t_end,
+void write_markdown(const std::string& path, const Model& model, double speed_m_per_s, double t_end,
                     const WorkPrecisionSettings& s, const WorkPrecisionResult& r) {
   write_file_atomically(path, [&](std::ostream& out) {
     const ReferenceSolution& ref = r.reference;
-    out << "# Work-precision: " << model.name << " at " << model.speed_m_per_s << " m/s, "
+    out << "# Work-precision: " << model.name << " at " << speed_m_per_s << " m/s, "
         << t_end << " s\n\n"
         << "- Error: max over the output times (every " << s.output_interval_s
         << " s) and the body coordinates of |x - x_ref|, positions only (m, rad), wheelset spin "
@@ -174,6 +174,7 @@ std::vector<IntegratorVariant> selected_variants(const std::vector<std::string>&
 void run_work_precision_command(const WorkPrecisionArgs& args) {
   const PreparedScene scene = prepare_scene(args.scene, args.overrides);
   const Model& model = scene.model;
+  const double speed_m_per_s = scene.speed_m_per_s;
   WorkPrecisionSettings s;
   s.t_end_s = scene.spec.simulation.t_end_s;
   s.output_interval_s = scene.spec.simulation.output_interval_s;
@@ -181,9 +182,9 @@ void run_work_precision_command(const WorkPrecisionArgs& args) {
   s.variants = selected_variants(args.integrators);
   if (!args.rtols.empty()) s.relative_tolerances = args.rtols;
   std::cerr << "work-precision: " << model.name << ", " << model.state_size() << " states, "
-            << model.speed_m_per_s << " m/s, " << s.t_end_s << " s\n";
+            << speed_m_per_s << " m/s, " << s.t_end_s << " s\n";
   const WorkPrecisionResult r = run_work_precision(
-      model, perturbed_initial_state(scene), s, [](const std::string& line) {
+      model, speed_m_per_s, perturbed_initial_state(scene), s, [](const std::string& line) {
         std::cerr << "  " << line << "\n";
       });
 
@@ -192,9 +193,9 @@ void run_work_precision_command(const WorkPrecisionArgs& args) {
   write_csv(csv, r);
   std::cout << "wrote " << csv << "\n";
   const std::string md = prefix + "_work_precision.md";
-  write_markdown(md, model, s.t_end_s, s, r);
+  write_markdown(md, model, speed_m_per_s, s.t_end_s, s, r);
   std::cout << "wrote " << md << "\n";
-  if (args.plots) std::cout << "wrote " << write_plot(prefix, model, s.t_end_s, r) << "\n";
+  if (args.plots) std::cout << "wrote " << write_plot(prefix, model, speed_m_per_s, s.t_end_s, r) << "\n";
 }
 
 }  // namespace

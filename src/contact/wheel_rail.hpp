@@ -25,7 +25,8 @@
 // Linear creep (no saturation), as the thesis.
 #include "contact/hertz.hpp"
 #include "contact/kalker.hpp"
-#include "model/body_motion.hpp"
+#include "contact/model_contact.hpp"
+#include "kinematics/body_motion.hpp"
 
 namespace railstab {
 

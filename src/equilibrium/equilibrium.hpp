@@ -4,9 +4,10 @@
 // curving on a constant-radius arc are the same problem (all free
 // accelerations zero, all relative velocities zero), solved by one solver.
 //
-// Unknowns: every free coordinate except wheelset spin angles (cyclic), and
-// the spin *rates* of free-spinning wheelsets (they settle with the rolling
-// radii). Equations: every free coordinate's acceleration is zero.
+// Unknowns: every free coordinate except wheelset spin angles (cyclic), the
+// spin *rates* of free-spinning wheelsets (they settle with the rolling
+// radii), and the internal states of force elements. Equations: every free
+// coordinate's acceleration is zero, and every internal state's rate.
 #include "model/model.hpp"
 
 #include <Eigen/Dense>
@@ -30,21 +31,24 @@ struct EquilibriumResult {
 
 // Throws std::runtime_error ("no equilibrium ...: residual of <state> ...")
 // when Newton does not converge.
-EquilibriumResult solve_equilibrium(const Model& model, const Eigen::VectorXd& guess,
+EquilibriumResult solve_equilibrium(const Model& model, double speed_m_per_s,
+                                    const Eigen::VectorXd& guess,
                                     const EquilibriumOptions& options = {});
 
 // Nominal state: every body at its nominal position, no offsets, wheelsets
-// spinning at V/r0, everything else at rest relative to its track frame.
-Eigen::VectorXd nominal_state(const Model& model);
+// spinning at V/r0, everything else at rest relative to its track frame,
+// element internal states zero.
+Eigen::VectorXd nominal_state(const Model& model, double speed_m_per_s);
 // The nominal state lowered by 0.1 mm so every wheel starts in contact (the
 // Hertz stiffness is zero at zero penetration): the Newton start.
-Eigen::VectorXd lowered_nominal_state(const Model& model);
+Eigen::VectorXd lowered_nominal_state(const Model& model, double speed_m_per_s);
 
-// ERRATA 13: set each element's preload so that the nominal configuration is
-// the static equilibrium under gravity (elastic forces of the sagged
-// equilibrium become preloads). Returns the static equilibrium of the
-// preloaded model (the wheelsets sink by the contact approach only).
-EquilibriumResult balance_gravity_at_nominal(Model& model, double time_s = 0.0);
+// The scene's initial state: nominal state plus the bodies' initial offsets
+// and rates (no equilibrium solved: for scenes that start from rest).
+Eigen::VectorXd initial_state(const Model& model, double speed_m_per_s);
+
+// True for the state index of a wheelset's spin angle (cyclic).
+bool is_spin_angle(const Model& model, int state);
 
 
 }  // namespace railstab

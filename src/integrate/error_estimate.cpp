@@ -4,14 +4,15 @@
 
 namespace railstab {
 
-ErrorEstimate estimate_integration_error(const Model& model, const Eigen::VectorXd& x0,
+ErrorEstimate estimate_integration_error(const Model& model, double speed_m_per_s,
+    const Eigen::VectorXd& x0,
                                          const IntegrationOptions& options, const Trajectory& run,
                                          double tightening) {
   IntegrationOptions tight = options;
   tight.relative_tolerance /= tightening;
   tight.absolute_tolerance /= tightening;
   tight.progress = nullptr;  // no progress lines from the second run
-  const Trajectory ref = integrate(model, x0, tight);
+  const Trajectory ref = integrate(model, speed_m_per_s, x0, tight);
   ErrorEstimate e;
   e.tightening = tightening;
   e.wall_seconds = ref.stats.wall_seconds;

@@ -31,7 +31,8 @@ struct ErrorEstimate {
   std::string reference_stopped_early;
 };
 
-ErrorEstimate estimate_integration_error(const Model& model, const Eigen::VectorXd& x0,
+ErrorEstimate estimate_integration_error(const Model& model, double speed_m_per_s,
+    const Eigen::VectorXd& x0,
                                          const IntegrationOptions& options, const Trajectory& run,
                                          double tightening = 100.0);
 

@@ -108,7 +108,7 @@ IntegrationOptions integration_options_for(const SimulationSpec& simulation) {
   return o;
 }
 
-Trajectory integrate(const Model& model, const Eigen::VectorXd& x0,
+Trajectory integrate(const Model& model, double speed_m_per_s, const Eigen::VectorXd& x0,
                      const IntegrationOptions& options) {
   if (!order_available(options.kind, options.order))
     throw std::invalid_argument("time integration: " + integrator_name(options.kind) +
@@ -116,8 +116,8 @@ Trajectory integrate(const Model& model, const Eigen::VectorXd& x0,
                                 available_orders_text(options.kind) + ")");
   const auto wall_start = std::chrono::steady_clock::now();
   const std::clock_t cpu_start = std::clock();
-  const RootFunctionSet roots(model);
-  ModelCallbackData data(model, roots, options.cpu_time_budget_s);
+  const RootFunctionSet roots(model, speed_m_per_s);
+  ModelCallbackData data(model, speed_m_per_s, roots, options.cpu_time_budget_s);
 
   Trajectory traj;
   traj.times_s.push_back(options.t_start_s);

@@ -105,7 +105,8 @@ IntegrationOptions integration_options_for(const SimulationSpec& simulation);
 
 // Throws std::runtime_error with SUNDIALS' reason and the time reached
 // (IntegrationGaveUp for work limits).
-Trajectory integrate(const Model& model, const Eigen::VectorXd& x0,
+Trajectory integrate(const Model& model, double speed_m_per_s,
+    const Eigen::VectorXd& x0,
                      const IntegrationOptions& options);
 
 

@@ -10,8 +10,10 @@
 
 namespace railstab {
 
-ModelCallbackData::ModelCallbackData(const Model& m, const RootFunctionSet& r, double cpu_budget_s)
-    : model(&m), roots(&r), cpu_start_(std::clock()), cpu_budget_s_(cpu_budget_s) {}
+ModelCallbackData::ModelCallbackData(const Model& m, double speed, const RootFunctionSet& r,
+                                     double cpu_budget_s)
+    : model(&m), speed_m_per_s(speed), roots(&r), workspace(m), cpu_start_(std::clock()),
+      cpu_budget_s_(cpu_budget_s) {}
 
 bool ModelCallbackData::within_budget() {
   if (cpu_budget_s_ <= 0.0) return true;
@@ -22,10 +24,11 @@ bool ModelCallbackData::within_budget() {
   return !budget_exhausted;
 }
 
-void prepare_imex_split(ModelCallbackData& data) {
-  data.implicit_part = std::make_unique<Model>(*data.model);
-  data.implicit_part->elements.clear();
-  data.implicit_part->gravity_m_per_s2 = 0.0;
+void prepare_imex_split(ModelCallbackData& data) { data.imex_split = true; }
+
+Eigen::VectorXd implicit_part_rhs(const Model& model, double speed_m_per_s, double t_s,
+                                  const Eigen::VectorXd& x) {
+  return rhs(model, speed_m_per_s, t_s, x, nullptr, ForceSelection::contact_and_inertia);
 }
 
 Eigen::Map<Eigen::VectorXd> as_eigen(N_Vector v) {
@@ -49,11 +52,19 @@ template <class F> int guarded(ModelCallbackData& data, F&& f) {
   }
 }
 
-int dense_jacobian(const Model& model, double t, N_Vector y, SUNMatrix J) {
+int dense_jacobian(const ModelCallbackData& data, ForceSelection forces, double t, N_Vector y,
+                   SUNMatrix J) {
   const long n = SUNDenseMatrix_Rows(J);
   Eigen::Map<Eigen::MatrixXd> jac(SUNDenseMatrix_Data(J), n, n);  // column-major
-  jac = rhs_jacobian_ad(model, t, as_eigen(y));
+  jac = rhs_jacobian_ad(*data.model, data.speed_m_per_s, t, as_eigen(y), forces);
   return jac.allFinite() ? 0 : 1;
+}
+
+Eigen::VectorXd full_rhs(ModelCallbackData& data, double t, N_Vector y) {
+  return rhs(*data.model, data.speed_m_per_s, t, as_eigen(y));
+}
+Eigen::VectorXd implicit_rhs(ModelCallbackData& data, double t, N_Vector y) {
+  return implicit_part_rhs(*data.model, data.speed_m_per_s, t, as_eigen(y));
 }
 
 bool same_point(const ModelCallbackData& d, double t, N_Vector y) {
@@ -67,7 +78,7 @@ bool same_point(const ModelCallbackData& d, double t, N_Vector y) {
 int full_rhs_callback(double t, N_Vector y, N_Vector ydot, void* user) {
   auto& data = *static_cast<ModelCallbackData*>(user);
   return guarded(data, [&] {
-    as_eigen(ydot) = rhs(*data.model, t, as_eigen(y));
+    as_eigen(ydot) = full_rhs(data, t, y);
     ++data.model_evaluations;
     return 0;
   });
@@ -77,7 +88,7 @@ int implicit_rhs_callback(double t, N_Vector y, N_Vector ydot, void* user) {
   auto& data = *static_cast<ModelCallbackData*>(user);
   return guarded(data, [&] {
     data.cache_valid = false;
-    data.cached_fi = rhs(*data.implicit_part, t, as_eigen(y));
+    data.cached_fi = implicit_rhs(data, t, y);
     ++data.model_evaluations;
     data.cached_x = as_eigen(y);
     data.cached_t = t;
@@ -90,12 +101,12 @@ int implicit_rhs_callback(double t, N_Vector y, N_Vector ydot, void* user) {
 int explicit_rhs_callback(double t, N_Vector y, N_Vector ydot, void* user) {
   auto& data = *static_cast<ModelCallbackData*>(user);
   return guarded(data, [&] {
-    const Eigen::VectorXd f = rhs(*data.model, t, as_eigen(y));
+    const Eigen::VectorXd f = full_rhs(data, t, y);
     ++data.model_evaluations;
     if (same_point(data, t, y)) {
       as_eigen(ydot) = f - data.cached_fi;
     } else {
-      as_eigen(ydot) = f - rhs(*data.implicit_part, t, as_eigen(y));
+      as_eigen(ydot) = f - implicit_rhs(data, t, y);
       ++data.model_evaluations;
     }
     return 0;
@@ -105,13 +116,14 @@ int explicit_rhs_callback(double t, N_Vector y, N_Vector ydot, void* user) {
 int full_jacobian_callback(double t, N_Vector y, N_Vector, SUNMatrix J, void* user, N_Vector,
                            N_Vector, N_Vector) {
   auto& data = *static_cast<ModelCallbackData*>(user);
-  return guarded(data, [&] { return dense_jacobian(*data.model, t, y, J); });
+  return guarded(data, [&] { return dense_jacobian(data, ForceSelection::all, t, y, J); });
 }
 
 int implicit_jacobian_callback(double t, N_Vector y, N_Vector, SUNMatrix J, void* user, N_Vector,
                                N_Vector, N_Vector) {
   auto& data = *static_cast<ModelCallbackData*>(user);
-  return guarded(data, [&] { return dense_jacobian(*data.implicit_part, t, y, J); });
+  return guarded(data,
+                 [&] { return dense_jacobian(data, ForceSelection::contact_and_inertia, t, y, J); });
 }
 
 int root_callback(double t, N_Vector y, double* g, void* user) {

@@ -23,6 +23,7 @@
 // at the same point, e.g. at the start of a step).
 #include "integrate/root_functions.hpp"
 #include "model/model.hpp"
+#include "model/workspace.hpp"
 
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_matrix.h>
@@ -36,11 +37,14 @@
 namespace railstab {
 
 struct ModelCallbackData {
-  ModelCallbackData(const Model& model, const RootFunctionSet& roots, double cpu_budget_s);
+  ModelCallbackData(const Model& model, double speed_m_per_s, const RootFunctionSet& roots,
+                    double cpu_budget_s);
 
   const Model* model;
+  double speed_m_per_s;
   const RootFunctionSet* roots;
-  std::unique_ptr<Model> implicit_part;  // IMEX only: see above
+  bool imex_split = false;  // IMEX only: see above
+  Workspace<double> workspace;
   std::string error;                     // first failure inside a callback
   std::string sundials_message;          // SUNDIALS' last error message
   bool budget_exhausted = false;
@@ -62,8 +66,12 @@ struct ModelCallbackData {
   long calls_ = 0;
 };
 
-// Prepares `data` for the IMEX split (builds implicit_part).
+// Prepares `data` for the IMEX split.
 void prepare_imex_split(ModelCallbackData& data);
+
+// The implicit part f_I of the IMEX split at (t, x) (see above).
+Eigen::VectorXd implicit_part_rhs(const Model& model, double speed_m_per_s, double t_s,
+                                  const Eigen::VectorXd& x);
 
 Eigen::Map<Eigen::VectorXd> as_eigen(N_Vector v);
 

@@ -5,21 +5,23 @@
 
 namespace railstab {
 
-RootFunctionSet::RootFunctionSet(const Model& model) : model_(&model) {
+RootFunctionSet::RootFunctionSet(const Model& model, double speed_m_per_s)
+    : model_(&model), speed_m_per_s_(speed_m_per_s) {
   for (int b = 0; b < int(model.bodies.size()); ++b) {
-    const ModelBody& body = model.bodies[size_t(b)];
-    if (body.contact < 0) continue;
+    const Body& body = model.bodies[size_t(b)];
+    if (!body.wheelset()) continue;
+    const int contact = body.wheelset()->contact;
     const int k = body.state_index[int(CoordinateIndex::y)];
     if (k >= 0) {
       RootFunction f;
       f.kind = RootFunction::Kind::flange_clearance;
       f.body = b;
       f.state = k;
-      f.clearance_m = model.contacts[size_t(body.contact)].spec.flange_clearance_m;
+      f.clearance_m = model.contacts[size_t(contact)].spec.flange_clearance_m;
       functions_.push_back(f);
     }
     // A prescribed wheel load never lifts off.
-    if (model.contacts[size_t(body.contact)].spec.normal != NormalForceKind::hertz) continue;
+    if (model.contacts[size_t(contact)].spec.normal != NormalForceKind::hertz) continue;
     for (int side : {1, -1}) {
       RootFunction f;
       f.kind = RootFunction::Kind::wheel_contact;
@@ -42,20 +44,17 @@ RootFunctionSet::RootFunctionSet(const Model& model) : model_(&model) {
 
 void RootFunctionSet::evaluate(double t_s, const Eigen::Ref<const Eigen::VectorXd>& x,
                                double* g) const {
-  std::vector<BodyMotion<double>> motions;
-  std::vector<TrackFrameKinematics> frames;
-  if (has_wheels_) {
-    frames = track_frames_at(*model_, t_s);
-    compute_all_body_motions<double>(*model_, t_s, frames, x, motions);
-  }
+  Workspace<double> ws;
+  if (has_wheels_) compute_all_body_motions<double>(*model_, ws, t_s, speed_m_per_s_, x);
   for (size_t i = 0; i < functions_.size(); ++i) {
     const RootFunction& f = functions_[i];
     if (f.kind == RootFunction::Kind::flange_clearance) {
       g[i] = f.clearance_m * f.clearance_m - x(f.state) * x(f.state);
     } else {
-      const ModelContact& c = geometry_only_[size_t(model_->bodies[size_t(f.body)].contact)];
+      const ModelContact& c =
+          geometry_only_[size_t(model_->bodies[size_t(f.body)].wheelset()->contact)];
       const WheelContact<double> w =
-          evaluate_wheel_contact(c, motions[size_t(f.body)], f.side, model_->speed_m_per_s);
+          evaluate_wheel_contact(c, ws.motions[size_t(f.body)], f.side, speed_m_per_s_);
       const double penetration = w.penetration_m;
       if (c.spec.normal_damping_N_s_per_m > 0.0 && penetration > 0.0) {
         g[i] = w.unclipped_normal_force_N != 0.0 ? w.unclipped_normal_force_N : -1e-20;

@@ -34,7 +34,7 @@ struct RootFunction {
 
 class RootFunctionSet {
  public:
-  explicit RootFunctionSet(const Model& model);
+  RootFunctionSet(const Model& model, double speed_m_per_s);
 
   int size() const { return int(functions_.size()); }
   const RootFunction& operator[](int i) const { return functions_[size_t(i)]; }
@@ -48,6 +48,7 @@ class RootFunctionSet {
 
  private:
   const Model* model_;
+  double speed_m_per_s_;
   std::vector<RootFunction> functions_;
   std::vector<ModelContact> geometry_only_;  // per Model::contacts
   bool has_wheels_ = false;

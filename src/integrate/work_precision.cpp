@@ -39,7 +39,7 @@ std::vector<int> compared_states(const Model& model, ErrorCoordinates which) {
   std::vector<int> states;
   for (int k = 0; k < model.n_coordinates; ++k) {
     const auto [b, c] = model.coordinate_of_state[size_t(k)];
-    if (model.bodies[size_t(b)].is_wheelset && c == int(CoordinateIndex::pitch)) continue;
+    if (model.bodies[size_t(b)].wheelset() && c == int(CoordinateIndex::pitch)) continue;
     if (which == ErrorCoordinates::lateral && c != int(CoordinateIndex::y) &&
         c != int(CoordinateIndex::yaw))
       continue;
@@ -106,7 +106,8 @@ double trajectory_position_error(const Model& model, const Trajectory& run, cons
   return worst;
 }
 
-ReferenceSolution compute_reference(const Model& model, const Eigen::VectorXd& x0,
+ReferenceSolution compute_reference(const Model& model, double speed_m_per_s,
+    const Eigen::VectorXd& x0,
                                     const WorkPrecisionSettings& s) {
   ReferenceSolution ref;
   ref.rtol = s.reference_rtol;
@@ -114,17 +115,18 @@ ReferenceSolution compute_reference(const Model& model, const Eigen::VectorXd& x
   ref.check_rtol = s.reference_check_rtol;
   ref.kind = s.reference_kind;
   ref.check_kind = s.reference_check_kind;
-  ref.trajectory = integrate(model, x0, options_for(s, ref.kind, 0, ref.rtol, ref.atol));
+  ref.trajectory = integrate(model, speed_m_per_s, x0, options_for(s, ref.kind, 0, ref.rtol, ref.atol));
   ref.cpu_seconds = ref.trajectory.stats.cpu_seconds;
   const Trajectory check =
-      integrate(model, x0, options_for(s, ref.check_kind, 0, ref.check_rtol,
+      integrate(model, speed_m_per_s, x0, options_for(s, ref.check_kind, 0, ref.check_rtol,
                                        ref.check_rtol * s.absolute_tolerance_scale));
   ref.check_cpu_seconds = check.stats.cpu_seconds;
   ref.check_difference = trajectory_position_error(model, check, ref.trajectory);
   return ref;
 }
 
-WorkPrecisionRun run_against_reference(const Model& model, const Eigen::VectorXd& x0,
+WorkPrecisionRun run_against_reference(const Model& model, double speed_m_per_s,
+    const Eigen::VectorXd& x0,
                                        const WorkPrecisionSettings& s,
                                        const IntegratorVariant& variant, double rtol,
                                        const ReferenceSolution& reference) {
@@ -137,7 +139,7 @@ WorkPrecisionRun run_against_reference(const Model& model, const Eigen::VectorXd
   o.cpu_time_budget_s = s.cpu_budget_per_run_s;
   const std::clock_t start = std::clock();
   try {
-    const Trajectory traj = integrate(model, x0, o);
+    const Trajectory traj = integrate(model, speed_m_per_s, x0, o);
     r.stats = traj.stats;
     r.error = trajectory_position_error(model, traj, reference.trajectory, &r.error_coordinate);
     r.lateral_error = trajectory_position_error(model, traj, reference.trajectory, nullptr,
@@ -159,7 +161,8 @@ WorkPrecisionRun run_against_reference(const Model& model, const Eigen::VectorXd
   return r;
 }
 
-WorkPrecisionResult run_work_precision(const Model& model, const Eigen::VectorXd& x0,
+WorkPrecisionResult run_work_precision(const Model& model, double speed_m_per_s,
+    const Eigen::VectorXd& x0,
                                        const WorkPrecisionSettings& s,
                                        const std::function<void(const std::string&)>& progress) {
   WorkPrecisionResult result;
@@ -170,7 +173,7 @@ WorkPrecisionResult run_work_precision(const Model& model, const Eigen::VectorXd
                   integrator_name(s.reference_check_kind).c_str(), s.reference_check_rtol);
     progress(line);
   }
-  result.reference = compute_reference(model, x0, s);
+  result.reference = compute_reference(model, speed_m_per_s, x0, s);
   if (progress) {
     char line[200];
     std::snprintf(line, sizeof line,
@@ -189,7 +192,7 @@ WorkPrecisionResult run_work_precision(const Model& model, const Eigen::VectorXd
         r.error = r.lateral_error = std::numeric_limits<double>::quiet_NaN();
         r.status = "skipped";  // a looser tolerance already gave up
       } else {
-        r = run_against_reference(model, x0, s, v, rtol, result.reference);
+        r = run_against_reference(model, speed_m_per_s, x0, s, v, rtol, result.reference);
         gave_up = r.status.starts_with("gave up");
       }
       if (progress) progress(format_run(r));

@@ -92,11 +92,13 @@ double trajectory_position_error(const Model& model, const Trajectory& run, cons
                                  ErrorCoordinates which = ErrorCoordinates::positions,
                                  int* compared = nullptr);
 
-ReferenceSolution compute_reference(const Model& model, const Eigen::VectorXd& x0,
+ReferenceSolution compute_reference(const Model& model, double speed_m_per_s,
+    const Eigen::VectorXd& x0,
                                     const WorkPrecisionSettings& settings);
 
 // One integrator at one tolerance against the reference.
-WorkPrecisionRun run_against_reference(const Model& model, const Eigen::VectorXd& x0,
+WorkPrecisionRun run_against_reference(const Model& model, double speed_m_per_s,
+    const Eigen::VectorXd& x0,
                                        const WorkPrecisionSettings& settings,
                                        const IntegratorVariant& variant, double rtol,
                                        const ReferenceSolution& reference);
@@ -104,7 +106,8 @@ WorkPrecisionRun run_against_reference(const Model& model, const Eigen::VectorXd
 // All variants and tolerances (loose to tight). After a variant gives up,
 // its tighter tolerances are skipped (they would cost more). `progress`
 // receives one line per run.
-WorkPrecisionResult run_work_precision(const Model& model, const Eigen::VectorXd& x0,
+WorkPrecisionResult run_work_precision(const Model& model, double speed_m_per_s,
+    const Eigen::VectorXd& x0,
                                        const WorkPrecisionSettings& settings,
                                        const std::function<void(const std::string&)>& progress);
 

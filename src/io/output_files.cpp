@@ -37,15 +37,16 @@ void write_file_atomically(const std::string& path,
   std::filesystem::rename(tmp, target);
 }
 
-void write_trajectory_csv(const std::string& path, const Model& model, const Trajectory& traj) {
+void write_trajectory_csv(const std::string& path, const Model& model, double speed_m_per_s,
+                          const Trajectory& traj) {
   write_file_atomically(path, [&](std::ostream& out) {
     out << "time_s";
-    for (const ModelBody& b : model.bodies)
+    for (const Body& b : model.bodies)
       for (const std::string& c : kCoordinateNames) out << ',' << b.name << '.' << c;
     out << '\n' << std::setprecision(10);
     Eigen::MatrixXd q6, qd6;
     for (size_t i = 0; i < traj.times_s.size(); ++i) {
-      model.full_coordinates(traj.times_s[i], traj.states[i], q6, qd6);
+      model.full_coordinates(traj.times_s[i], speed_m_per_s, traj.states[i], q6, qd6);
       out << traj.times_s[i];
       for (Eigen::Index b = 0; b < q6.cols(); ++b)
         for (int c = 0; c < 6; ++c) {
@@ -62,19 +63,18 @@ void write_trajectory_csv(const std::string& path, const Model& model, const Tra
   });
 }
 
-void write_absolute_roll_csv(const std::string& path, const Model& model,
+void write_absolute_roll_csv(const std::string& path, const Model& model, double speed_m_per_s,
                              const Trajectory& traj) {
   write_file_atomically(path, [&](std::ostream& out) {
     out << "time_s";
-    for (const ModelBody& b : model.bodies) out << ',' << b.name << ".absolute_roll_rad";
+    for (const Body& b : model.bodies) out << ',' << b.name << ".absolute_roll_rad";
     out << '\n' << std::setprecision(10);
-    std::vector<BodyMotion<double>> motions;
+    Workspace<double> ws(model);
     for (size_t i = 0; i < traj.times_s.size(); ++i) {
       const double t = traj.times_s[i];
-      compute_all_body_motions<double>(model, t, track_frames_at(model, t), traj.states[i],
-                                       motions);
+      compute_all_body_motions<double>(model, ws, t, speed_m_per_s, traj.states[i]);
       out << t;
-      for (const BodyMotion<double>& m : motions) {
+      for (const BodyMotion<double>& m : ws.motions) {
         const Eigen::Matrix3d R_WB = m.R_WI * m.R_IB;
         out << ',' << std::asin(std::clamp(R_WB(2, 1), -1.0, 1.0));
       }

@@ -15,11 +15,13 @@ void write_file_atomically(const std::string& path,
 
 // CSV: time_s, then <body>.<coordinate> for all six coordinates of every body
 // (relative to the body's track frame). Throws if a value is not finite.
-void write_trajectory_csv(const std::string& path, const Model& model, const Trajectory& traj);
+void write_trajectory_csv(const std::string& path, const Model& model, double speed_m_per_s,
+                          const Trajectory& traj);
 
 // CSV: time_s, then <body>.absolute_roll_rad: the roll of each body relative
 // to the horizontal (W), i.e. track cant roll plus the body's own roll;
 // exactly asin of the z-component of the body's y axis (Z-X-Y angles in W).
-void write_absolute_roll_csv(const std::string& path, const Model& model, const Trajectory& traj);
+void write_absolute_roll_csv(const std::string& path, const Model& model, double speed_m_per_s,
+                             const Trajectory& traj);
 
 }  // namespace railstab

@@ -29,6 +29,7 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <optional>
 #include <sstream>
 #include <string_view>
@@ -241,12 +242,19 @@ Value choice_from(const toml::node& node, std::string_view source, std::string_v
 class TableReader {
  public:
   TableReader(const toml::table& table, std::string key_path, std::string source,
-              std::vector<std::string_view> known_keys)
+              std::vector<std::string_view> known_keys, std::string owner = "")
       : table_(table),
         key_path_(std::move(key_path)),
         source_(std::move(source)),
-        known_keys_(known_keys) {
+        known_keys_(known_keys),
+        owner_(std::move(owner)) {
     reject_unknown_keys();
+  }
+
+  // The same table read with a narrower set of keys (e.g. once an element's
+  // type is known); `owner` names what the keys belong to in messages.
+  TableReader with_keys(std::vector<std::string_view> known_keys, std::string owner) const {
+    return TableReader(table_, key_path_, source_, std::move(known_keys), std::move(owner));
   }
 
   const std::string& source() const { return source_; }
@@ -376,7 +384,9 @@ class TableReader {
     for (const auto& [key, value] : table_) {
       const std::string_view name = key.str();
       if (std::find(known_keys_.begin(), known_keys_.end(), name) != known_keys_.end()) continue;
-      throw scene_error(source_, path_of(name), "unknown key" + did_you_mean(name, known_keys_));
+      throw scene_error(source_, path_of(name),
+                        (owner_.empty() ? "unknown key" : "no such key on " + owner_) +
+                            did_you_mean(name, known_keys_));
     }
   }
 
@@ -384,6 +394,7 @@ class TableReader {
   std::string key_path_;
   std::string source_;
   std::vector<std::string_view> known_keys_;
+  std::string owner_;
 };
 
 // ============================================================================
@@ -407,9 +418,6 @@ const Choices<TangentialForceKind> kTangentialForces = {
     {"constant", TangentialForceKind::constant},
     {"none", TangentialForceKind::none}};
 const Choices<bool> kBodyIsWheelset = {{"wheelset", true}, {"rigid_body", false}};
-const Choices<ElementKind> kElementKinds = {
-    {"spring_damper_3d", ElementKind::spring_damper_3d},
-    {"rotational_spring_damper", ElementKind::rotational_spring_damper}};
 
 // --- [scene] -------------------------------------------------------------------
 void read_scene_section(const TableReader& section, SceneSpec& scene) {
@@ -649,50 +657,172 @@ std::vector<BodySpec> read_bodies(const TableReader& top) {
 }
 
 // --- [[elements]] ----------------------------------------------------------------
-// The keys of the two element types; each type rejects the other's.
-const std::array<std::string_view, 3> kTranslationalKeys = {
-    "stiffness_N_per_m", "damping_N_s_per_m", "actuator_force_N"};
-const std::array<std::string_view, 3> kRotationalKeys = {
-    "stiffness_N_m_per_rad", "damping_N_m_s_per_rad", "actuator_moment_N_m"};
+// Keys every element takes; each type adds its own (ElementReader::keys) and
+// rejects any other. Adding an element type is one ElementReader below.
+const std::vector<std::string_view> kCommonElementKeys = {"name",     "type",     "body1",
+                                                          "body2",    "point1_m", "point2_m",
+                                                          "mirror_lateral"};
 
-void reject_keys_of_other_type(const TableReader& element, std::string_view type,
-                               const std::array<std::string_view, 3>& other_keys,
-                               const std::array<std::string_view, 3>& own_keys) {
-  for (std::string_view key : other_keys)
-    element.reject_if_present(key, "no " + std::string(key) + " on a " + std::string(type) +
-                                       " (it takes " + std::string(own_keys[0]) + ", " +
-                                       std::string(own_keys[1]) + ", " + std::string(own_keys[2]) +
-                                       ")");
+double non_negative(const TableReader& t, std::string_view key, std::string_view unit,
+                    std::optional<double> fallback = std::nullopt) {
+  const double v = fallback && !t.has(key) ? *fallback : t.number(key, unit);
+  if (!(v >= 0.0)) t.fail(key, "a number >= 0" + unit_suffix(unit), format_number(v));
+  return v;
+}
+double positive(const TableReader& t, std::string_view key, std::string_view unit,
+                std::optional<double> fallback = std::nullopt) {
+  const double v = fallback && !t.has(key) ? *fallback : t.number(key, unit);
+  if (!(v > 0.0)) t.fail(key, "a number > 0" + unit_suffix(unit), format_number(v));
+  return v;
+}
+Eigen::Vector3d non_negative_each(const TableReader& t, std::string_view key,
+                                  std::string_view unit) {
+  const Eigen::Vector3d v = t.vector3(key, unit);
+  if (!(v.array() >= 0.0).all())
+    t.fail(key, "three numbers >= 0" + unit_suffix(unit), format_vector(v));
+  return v;
 }
 
-void read_spring_damper_3d(const TableReader& element, ElementSpec& spec) {
-  spec.point1_m = element.vector3("point1_m", "m");
-  spec.point2_m = element.vector3("point2_m", "m");
-  spec.stiffness = element.vector3("stiffness_N_per_m", "N/m");
-  spec.damping = element.vector3("damping_N_s_per_m", "N s/m");
-  spec.actuator = element.vector3_or("actuator_force_N", "N", Eigen::Vector3d::Zero());
-  reject_keys_of_other_type(element, "spring_damper_3d", kRotationalKeys, kTranslationalKeys);
+// A force characteristic: `linear_key` (a coefficient) or `table_key`
+// ([[x, F], ...] with x strictly increasing), exactly one of them.
+ForceCharacteristic<double> characteristic(const TableReader& t, std::string_view linear_key,
+                                           std::string_view linear_unit,
+                                           std::string_view table_key, std::string_view x_unit,
+                                           bool required = true) {
+  const bool has_linear = t.has(linear_key), has_table = t.has(table_key);
+  if (has_linear && has_table)
+    t.fail(table_key, "either " + std::string(linear_key) + " or " + std::string(table_key),
+           "both");
+  if (has_linear) return ForceCharacteristic<double>::linear(non_negative(t, linear_key, linear_unit));
+  if (!has_table) {
+    if (required)
+      t.fail_missing(linear_key, "a number" + unit_suffix(linear_unit) + " (or " +
+                                     std::string(table_key) + ")");
+    return ForceCharacteristic<double>::linear(0.0);
+  }
+  const std::string expected = "an array of at least 2 [x, F] pairs (x in " +
+                               std::string(x_unit) + ", F in N) with x strictly increasing";
+  const toml::array& rows = t.array(table_key, expected);
+  std::vector<double> xs, fs;
+  for (size_t i = 0; i < rows.size(); ++i) {
+    const toml::array* row = rows.get(i)->as_array();
+    const std::string row_path = indexed_path(t.path_of(table_key), i);
+    if (!row || row->size() != 2)
+      fail_expectation(t.source(), row_path, "a pair [x, F]", describe_found(*rows.get(i)));
+    xs.push_back(number_from(*row->get(0), t.source(), indexed_path(row_path, 0), x_unit));
+    fs.push_back(number_from(*row->get(1), t.source(), indexed_path(row_path, 1), "N"));
+    if (i > 0 && !(xs[i] > xs[i - 1]))
+      fail_expectation(t.source(), indexed_path(row_path, 0),
+                       "x greater than the previous row's " + format_number(xs[i - 1]),
+                       format_number(xs[i]));
+  }
+  if (xs.size() < 2) t.fail(table_key, expected, std::to_string(xs.size()) + " rows");
+  return ForceCharacteristic<double>::table(xs, fs);
 }
 
-void read_rotational_spring_damper(const TableReader& element, ElementSpec& spec) {
-  spec.point1_m = element.vector3_or("point1_m", "m", Eigen::Vector3d::Zero());
-  spec.point2_m = element.vector3_or("point2_m", "m", Eigen::Vector3d::Zero());
-  spec.stiffness = element.vector3("stiffness_N_m_per_rad", "N m/rad");
-  spec.damping = element.vector3("damping_N_m_s_per_rad", "N m s/rad");
-  spec.actuator = element.vector3_or("actuator_moment_N_m", "N m", Eigen::Vector3d::Zero());
-  reject_keys_of_other_type(element, "rotational_spring_damper", kTranslationalKeys,
-                            kRotationalKeys);
+template <class Element> ElementSpec with_ends(Element e, const ElementEnds& ends) {
+  e.ends = ends;
+  return e;
+}
+
+struct ElementReader {
+  std::string_view type;
+  std::vector<std::string_view> keys;  // besides kCommonElementKeys
+  bool points_required;
+  std::function<ElementSpec(const TableReader&, const ElementEnds&)> read;
+};
+
+const std::vector<ElementReader>& element_readers() {
+  static const std::vector<ElementReader> readers = {
+      {SpringDamper3d<double>::kType,
+       {"stiffness_N_per_m", "damping_N_s_per_m", "actuator_force_N"},
+       true,
+       [](const TableReader& t, const ElementEnds& ends) -> ElementSpec {
+         SpringDamper3d<double> e;
+         e.stiffness_N_per_m = non_negative_each(t, "stiffness_N_per_m", "N/m");
+         e.damping_N_s_per_m = non_negative_each(t, "damping_N_s_per_m", "N s/m");
+         e.actuator_force_N = t.vector3_or("actuator_force_N", "N", Eigen::Vector3d::Zero());
+         return with_ends(e, ends);
+       }},
+      {RotationalSpringDamper<double>::kType,
+       {"stiffness_N_m_per_rad", "damping_N_m_s_per_rad", "actuator_moment_N_m"},
+       false,
+       [](const TableReader& t, const ElementEnds& ends) -> ElementSpec {
+         RotationalSpringDamper<double> e;
+         e.stiffness_N_m_per_rad = non_negative_each(t, "stiffness_N_m_per_rad", "N m/rad");
+         e.damping_N_m_s_per_rad = non_negative_each(t, "damping_N_m_s_per_rad", "N m s/rad");
+         e.actuator_moment_N_m = t.vector3_or("actuator_moment_N_m", "N m", Eigen::Vector3d::Zero());
+         return with_ends(e, ends);
+       }},
+      {SeriesSpringDamper<double>::kType,
+       {"series_stiffness_N_per_m", "damping_N_s_per_m", "damper_force_velocity_table"},
+       true,
+       [](const TableReader& t, const ElementEnds& ends) -> ElementSpec {
+         SeriesSpringDamper<double> e;
+         e.series_stiffness_N_per_m = positive(t, "series_stiffness_N_per_m", "N/m");
+         const ForceCharacteristic<double> damper =
+             characteristic(t, "damping_N_s_per_m", "N s/m", "damper_force_velocity_table", "m/s");
+         if (!damper.strictly_increasing())
+           t.fail(damper.is_table ? "damper_force_velocity_table" : "damping_N_s_per_m",
+                  "a damper whose force strictly increases with velocity (the series element "
+                  "needs its velocity as a function of force)",
+                  damper.is_table ? "a table with a flat or falling step" : "zero damping");
+         e.set_damper(damper);
+         return with_ends(e, ends);
+       }},
+      {LineSpringDamper<double>::kType,
+       {"stiffness_N_per_m", "spring_force_deflection_table", "damping_N_s_per_m",
+        "damper_force_velocity_table"},
+       true,
+       [](const TableReader& t, const ElementEnds& ends) -> ElementSpec {
+         LineSpringDamper<double> e;
+         e.spring = characteristic(t, "stiffness_N_per_m", "N/m", "spring_force_deflection_table",
+                                   "m", false);
+         e.damper = characteristic(t, "damping_N_s_per_m", "N s/m", "damper_force_velocity_table",
+                                   "m/s", false);
+         return with_ends(e, ends);
+       }},
+      {BumpStop<double>::kType,
+       {"axis", "clearance_m", "stiffness_N_per_m", "progressive_stiffness_N_per_m3",
+        "contact_smoothing_m"},
+       true,
+       [](const TableReader& t, const ElementEnds& ends) -> ElementSpec {
+         BumpStop<double> e;
+         const Eigen::Vector3d axis = t.vector3("axis", "");
+         if (!(axis.norm() > 0.0) || !axis.allFinite())
+           t.fail("axis", "a non-zero direction in body 1's frame", format_vector(axis));
+         e.axis = axis.normalized();
+         e.clearance_m = non_negative(t, "clearance_m", "m");
+         e.stiffness_N_per_m = positive(t, "stiffness_N_per_m", "N/m");
+         e.progressive_stiffness_N_per_m3 =
+             non_negative(t, "progressive_stiffness_N_per_m3", "N/m^3", 0.0);
+         e.contact_smoothing_m = positive(t, "contact_smoothing_m", "m", 5e-4);
+         return with_ends(e, ends);
+       }},
+      {TractionRod<double>::kType,
+       {"stiffness_N_per_m", "damping_N_s_per_m"},
+       true,
+       [](const TableReader& t, const ElementEnds& ends) -> ElementSpec {
+         TractionRod<double> e;
+         e.stiffness_N_per_m = positive(t, "stiffness_N_per_m", "N/m");
+         e.damping_N_s_per_m = non_negative(t, "damping_N_s_per_m", "N s/m", 0.0);
+         return with_ends(e, ends);
+       }},
+  };
+  return readers;
 }
 
 // mirror_lateral = true: "<name>_left" as given, "<name>_right" with the y of
-// both points negated.
+// both points (and of a bump stop's axis) negated.
 std::array<ElementSpec, 2> mirrored_pair(const ElementSpec& element) {
   ElementSpec left = element;
   ElementSpec right = element;
-  left.name += "_left";
-  right.name += "_right";
-  right.point1_m.y() = -right.point1_m.y();
-  right.point2_m.y() = -right.point2_m.y();
+  ends_of(left).name += "_left";
+  ElementEnds& r = ends_of(right);
+  r.name += "_right";
+  r.point1_m.y() = -r.point1_m.y();
+  r.point2_m.y() = -r.point2_m.y();
+  if (auto* stop = std::get_if<BumpStop<double>>(&right)) stop->axis.y() = -stop->axis.y();
   return {left, right};
 }
 
@@ -704,21 +834,37 @@ struct ElementList {
 };
 
 ElementList read_elements(const TableReader& top) {
+  std::vector<std::string_view> all_keys = kCommonElementKeys;
+  Choices<size_t> types;
+  for (size_t i = 0; i < element_readers().size(); ++i) {
+    const ElementReader& r = element_readers()[i];
+    types.emplace_back(r.type, i);
+    all_keys.insert(all_keys.end(), r.keys.begin(), r.keys.end());
+  }
   ElementList list;
-  for (const TableReader& element : top.tables_in_array_or_none(
-           "elements",
-           {"name", "type", "body1", "body2", "point1_m", "point2_m", "stiffness_N_per_m",
-            "damping_N_s_per_m", "actuator_force_N", "stiffness_N_m_per_rad",
-            "damping_N_m_s_per_rad", "actuator_moment_N_m", "mirror_lateral"})) {
-    ElementSpec spec;
-    spec.name = element.text("name");
-    spec.kind = element.choice("type", kElementKinds);
-    spec.body1 = element.text("body1");
-    spec.body2 = element.text("body2");
-    if (spec.kind == ElementKind::spring_damper_3d)
-      read_spring_damper_3d(element, spec);
-    else
-      read_rotational_spring_damper(element, spec);
+  for (const TableReader& any : top.tables_in_array_or_none("elements", all_keys)) {
+    const ElementReader& reader = element_readers()[any.choice("type", types)];
+    std::vector<std::string_view> keys = kCommonElementKeys;
+    keys.insert(keys.end(), reader.keys.begin(), reader.keys.end());
+    // A key of another element type: say which keys this type takes.
+    for (const std::string_view key : all_keys)
+      if (std::find(keys.begin(), keys.end(), key) == keys.end()) {
+        std::string takes;
+        for (const std::string_view own : reader.keys)
+          takes += (takes.empty() ? "" : ", ") + std::string(own);
+        any.reject_if_present(key, "no " + std::string(key) + " on a " + std::string(reader.type) +
+                                       " (it takes " + takes + ")");
+      }
+    const TableReader element = any.with_keys(keys, "a " + std::string(reader.type));
+    ElementEnds ends;
+    ends.name = element.text("name");
+    ends.body1_name = element.text("body1");
+    ends.body2_name = element.text("body2");
+    ends.point1_m = reader.points_required ? element.vector3("point1_m", "m")
+                                           : element.vector3_or("point1_m", "m", Eigen::Vector3d::Zero());
+    ends.point2_m = reader.points_required ? element.vector3("point2_m", "m")
+                                           : element.vector3_or("point2_m", "m", Eigen::Vector3d::Zero());
+    const ElementSpec spec = reader.read(element, ends);
     if (element.flag_or("mirror_lateral", false)) {
       for (const ElementSpec& half : mirrored_pair(spec)) {
         list.specs.push_back(half);
@@ -783,12 +929,6 @@ toml::table parse_toml(const std::string& text, const std::string& source) {
 // 5. Semantic checks
 // ============================================================================
 
-const char* stiffness_key(ElementKind kind) {
-  return kind == ElementKind::spring_damper_3d ? "stiffness_N_per_m" : "stiffness_N_m_per_rad";
-}
-const char* damping_key(ElementKind kind) {
-  return kind == ElementKind::spring_damper_3d ? "damping_N_s_per_m" : "damping_N_m_s_per_rad";
-}
 
 std::string contact_path(const ContactSpec& contact) {
   return child_path("contacts", contact.name);
@@ -978,23 +1118,20 @@ class SceneChecker {
   }
 
   void check_element(size_t index) const {
-    const ElementSpec& element = scene_.elements[index];
+    const ElementEnds& element = ends_of(scene_.elements[index]);
     const std::string path =
         index < element_paths_.size() ? element_paths_[index] : indexed_path("elements", index);
     if (element.name.empty()) fail(child_path(path, "name"), "a non-empty name", "''");
-    if (element.body1 != kTrackBodyName && !has_body(element.body1))
-      throw unknown_body(child_path(path, "body1"), element.body1, "; or 'track'");
-    if (element.body2 == kTrackBodyName)
-      fail(child_path(path, "body2"), "a body (only body1 may be 'track')", quoted(element.body2));
-    if (!has_body(element.body2)) throw unknown_body(child_path(path, "body2"), element.body2, "");
-    if (element.body1 == element.body2)
+    if (element.body1_name != kTrackBodyName && !has_body(element.body1_name))
+      throw unknown_body(child_path(path, "body1"), element.body1_name, "; or 'track'");
+    if (element.body2_name == kTrackBodyName)
+      fail(child_path(path, "body2"), "a body (only body1 may be 'track')",
+           quoted(element.body2_name));
+    if (!has_body(element.body2_name))
+      throw unknown_body(child_path(path, "body2"), element.body2_name, "");
+    if (element.body1_name == element.body2_name)
       fail(child_path(path, "body2"), "a body other than body1",
-           quoted(element.body2) + " for both");
-    require_non_negative_each(child_path(path, stiffness_key(element.kind)), element.stiffness,
-                              element.kind == ElementKind::spring_damper_3d ? "N/m" : "N m/rad");
-    require_non_negative_each(
-        child_path(path, damping_key(element.kind)), element.damping,
-        element.kind == ElementKind::spring_damper_3d ? "N s/m" : "N m s/rad");
+           quoted(element.body2_name) + " for both");
   }
 
   SceneError unknown_body(std::string_view path, const std::string& name,
@@ -1095,9 +1232,9 @@ SceneSpec load_scene_file(const std::string& path) {
 void validate_scene(const SceneSpec& scene) {
   std::vector<std::string> element_paths;
   for (size_t i = 0; i < scene.elements.size(); ++i)
-    element_paths.push_back(scene.elements[i].name.empty()
+    element_paths.push_back(ends_of(scene.elements[i]).name.empty()
                                 ? indexed_path("elements", i)
-                                : "elements[" + quoted(scene.elements[i].name) + "]");
+                                : "elements[" + quoted(ends_of(scene.elements[i]).name) + "]");
   SceneChecker(scene, std::move(element_paths)).check_all();
 }
 

@@ -8,13 +8,14 @@
 
 namespace railstab {
 
-LinearModel linearize(const Model& model, const Eigen::VectorXd& x,
+LinearModel linearize(const Model& model, double speed_m_per_s, const Eigen::VectorXd& x,
                       const LinearizationOptions& options) {
   const int n = model.n_coordinates;
   LinearModel lin;
-  const Eigen::VectorXd acc = rhs(model, options.time_s, x).tail(n);
+  const Eigen::VectorXd acc =
+      rhs(model, speed_m_per_s, options.time_s, x).tail(model.state_size() - n);
   Eigen::Index worst = 0;
-  lin.equilibrium_residual = n > 0 ? acc.cwiseAbs().maxCoeff(&worst) : 0.0;
+  lin.equilibrium_residual = acc.size() > 0 ? acc.cwiseAbs().maxCoeff(&worst) : 0.0;
   if (lin.equilibrium_residual > options.max_equilibrium_residual) {
     std::ostringstream msg;
     msg << "cannot linearise scene '" << model.name << "': the point is not an equilibrium ("
@@ -22,11 +23,11 @@ LinearModel linearize(const Model& model, const Eigen::VectorXd& x,
         << " > " << options.max_equilibrium_residual << ")";
     throw std::runtime_error(msg.str());
   }
-  const Eigen::MatrixXd full = rhs_jacobian_ad(model, options.time_s, x);
+  const Eigen::MatrixXd full = rhs_jacobian_ad(model, speed_m_per_s, options.time_s, x);
   // A position whose column is exactly zero is cyclic: drop it (its row only
   // says d q/dt = u and feeds nothing back).
   for (int k = 0; k < model.state_size(); ++k) {
-    if (k < n && full.col(k).cwiseAbs().maxCoeff() == 0.0) {
+    if (model.is_position(k) && full.col(k).cwiseAbs().maxCoeff() == 0.0) {
       lin.removed_states.push_back(model.state_name(k));
     } else {
       lin.kept_states.push_back(k);

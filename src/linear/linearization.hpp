@@ -20,7 +20,7 @@ struct LinearModel {
   std::vector<int> kept_states;           // indices into the full state
   std::vector<std::string> state_names;   // of the kept states
   std::vector<std::string> removed_states;  // cyclic coordinates dropped
-  double equilibrium_residual = 0.0;      // max |acceleration| at the point
+  double equilibrium_residual = 0.0;      // max |acceleration| (and internal rate) at the point
 };
 
 struct LinearizationOptions {
@@ -30,7 +30,7 @@ struct LinearizationOptions {
 
 // Throws std::runtime_error naming the worst residual when x is not an
 // equilibrium.
-LinearModel linearize(const Model& model, const Eigen::VectorXd& x,
+LinearModel linearize(const Model& model, double speed_m_per_s, const Eigen::VectorXd& x,
                       const LinearizationOptions& options = {});
 
 }  // namespace railstab

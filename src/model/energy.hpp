@@ -19,7 +19,8 @@ struct EnergyParts {
   double total() const { return kinetic_J + gravity_J + elastic_J + contact_J; }
 };
 
-EnergyParts mechanical_energy(const Model& model, double t_s, const Eigen::VectorXd& x,
+EnergyParts mechanical_energy(const Model& model, double speed_m_per_s, double t_s,
+                              const Eigen::VectorXd& x,
                               const Eigen::Vector3d& observer_velocity_W = Eigen::Vector3d::Zero());
 
 }  // namespace railstab

@@ -1,74 +1,71 @@
 #include "model/equations_of_motion.hpp"
 
-#include "elements/spring_damper.hpp"
-
 #include <sstream>
 #include <stdexcept>
 
 namespace railstab {
 
-std::vector<TrackFrameKinematics> track_frames_at(const Model& model, double t_s) {
-  std::vector<TrackFrameKinematics> frames;
-  frames.reserve(model.bodies.size());
-  for (size_t b = 0; b < model.bodies.size(); ++b)
-    frames.push_back(model.track.frame_at(model.arc_length_of(int(b), t_s), model.speed_m_per_s));
-  return frames;
-}
-
 template <class T>
-void compute_all_body_motions(const Model& model, double t_s,
-                              const std::vector<TrackFrameKinematics>& frames, const VecX<T>& x,
-                              std::vector<BodyMotion<T>>& motions) {
+void compute_all_body_motions(const ModelTpl<ParameterScalar<T>>& model, Workspace<T>& ws,
+                              double t_s, double speed_m_per_s, const VecX<T>& x) {
+  ws.update_frames(model, t_s, speed_m_per_s);
   const int n = model.n_coordinates;
-  motions.resize(model.bodies.size());
   for (size_t b = 0; b < model.bodies.size(); ++b) {
-    const ModelBody& body = model.bodies[b];
+    const auto& body = model.bodies[b];
     Eigen::Matrix<T, 6, 1> q, qd;
     for (int i = 0; i < 6; ++i) {
       const int k = body.state_index[i];
       if (k >= 0) {
         q(i) = x(k);
         qd(i) = x(n + k);
-      } else {  // prescribed: q0 + rate t
-        q(i) = T(body.initial_q(i) + body.initial_rate(i) * t_s);
-        qd(i) = T(body.initial_rate(i));
+      } else {  // prescribed: nominal + offset + rate t
+        q(i) = T(body.prescribed_value(i, t_s, speed_m_per_s));
+        qd(i) = T(body.prescribed_rate(i, speed_m_per_s));
       }
     }
-    compute_body_motion(body, frames[b], q, qd, motions[b]);
+    compute_body_motion(body, ws.frames[b], q, qd, ws.motions[b]);
   }
 }
 
 template <class T>
-void evaluate_rhs(const Model& model, double t_s, const std::vector<TrackFrameKinematics>& frames,
-                  const VecX<T>& x, VecX<T>& xdot, EvaluationDetails* details) {
+void evaluate_rhs(const ModelTpl<ParameterScalar<T>>& model, Workspace<T>& ws, double t_s,
+                  double speed_m_per_s, const VecX<T>& x, VecX<T>& xdot,
+                  EvaluationDetails* details, ForceSelection forces) {
   const int n = model.n_coordinates;
-  std::vector<BodyMotion<T>> motions;
-  compute_all_body_motions(model, t_s, frames, x, motions);
+  const int z0 = model.internal_state_offset();
+  compute_all_body_motions(model, ws, t_s, speed_m_per_s, x);
+  xdot.resize(model.state_size());
 
-  // Gravity (W: -z).
-  for (size_t b = 0; b < model.bodies.size(); ++b)
-    motions[b].force_W.z() -= T(model.bodies[b].mass_kg * model.gravity_m_per_s2);
+  if (forces == ForceSelection::all) {
+    // Gravity (W: -z).
+    for (size_t b = 0; b < model.bodies.size(); ++b)
+      ws.motions[b].force_W.z() -= lift<T>(model.bodies[b].mass_kg) * T(model.gravity_m_per_s2);
 
-  // Force elements.
-  for (const ModelElement& e : model.elements) {
-    const Attachment<T> a1 = e.body1 == kTrackBody ? attachment_of<T>(frames[e.body2])
-                                                   : attachment_of(motions[e.body1]);
-    const Attachment<T> a2 = attachment_of(motions[e.body2]);
-    if (e.kind == ElementKind::spring_damper_3d)
-      apply_spring_damper_3d(e, a1, a2);
-    else
-      apply_rotational_spring_damper(e, a1, a2);
+    // Force elements, and the rates of their internal states.
+    for (size_t i = 0; i < model.elements.size(); ++i) {
+      const int first = model.element_first_state[i];
+      const T* z = first >= 0 ? &x(z0 + first) : nullptr;
+      T* zdot = first >= 0 ? &xdot(z0 + first) : nullptr;
+      std::visit(
+          [&](const auto& e) {
+            const auto [a1, a2] = element_attachments(e.ends, ws);
+            e.apply(a1, a2, z, zdot);
+          },
+          model.elements[i]);
+    }
+  } else {
+    for (int k = 0; k < model.n_internal_states; ++k) xdot(z0 + k) = T(0);
   }
 
   // Wheel-rail contact.
   if (details) details->contacts.clear();
   for (size_t b = 0; b < model.bodies.size(); ++b) {
-    const ModelBody& body = model.bodies[b];
-    if (body.contact < 0) continue;
-    BodyMotion<T>& m = motions[b];
+    const WheelsetKind* wheelset = model.bodies[b].wheelset();
+    if (!wheelset) continue;
+    BodyMotion<T>& m = ws.motions[b];
     for (int side : {1, -1}) {
       const WheelContact<T> wc =
-          evaluate_wheel_contact(model.contacts[body.contact], m, side, model.speed_m_per_s);
+          evaluate_wheel_contact(model.contacts[wheelset->contact], m, side, speed_m_per_s);
       m.force_W += m.R_WI * wc.force_I;
       m.spinning_moment_W += m.R_WI * wc.moment_I;
       if constexpr (std::is_same_v<T, double>) {
@@ -77,10 +74,9 @@ void evaluate_rhs(const Model& model, double t_s, const std::vector<TrackFrameKi
     }
   }
 
-  xdot.resize(2 * n);
   for (size_t b = 0; b < model.bodies.size(); ++b) {
-    const ModelBody& body = model.bodies[b];
-    const Eigen::Matrix<T, 6, 1> acc = body_accelerations(body, motions[b]);
+    const auto& body = model.bodies[b];
+    const Eigen::Matrix<T, 6, 1> acc = body_accelerations(body, ws.motions[b]);
     for (int i = 0; i < 6; ++i) {
       const int k = body.state_index[i];
       if (k < 0) continue;
@@ -90,11 +86,12 @@ void evaluate_rhs(const Model& model, double t_s, const std::vector<TrackFrameKi
   }
 }
 
-Eigen::VectorXd rhs(const Model& model, double t_s, const Eigen::VectorXd& x,
-                    EvaluationDetails* details) {
-  const auto frames = track_frames_at(model, t_s);
+Eigen::VectorXd rhs(const Model& model, double speed_m_per_s, double t_s,
+                    const Eigen::VectorXd& x, EvaluationDetails* details,
+                    ForceSelection forces) {
+  Workspace<double> ws(model);
   Eigen::VectorXd xdot;
-  evaluate_rhs<double>(model, t_s, frames, x, xdot, details);
+  evaluate_rhs<double>(model, ws, t_s, speed_m_per_s, x, xdot, details, forces);
   for (int i = 0; i < xdot.size(); ++i) {
     if (!std::isfinite(xdot(i))) {
       std::ostringstream msg;
@@ -106,18 +103,14 @@ Eigen::VectorXd rhs(const Model& model, double t_s, const Eigen::VectorXd& x,
   return xdot;
 }
 
-template void evaluate_rhs<double>(const Model&, double, const std::vector<TrackFrameKinematics>&,
-                                   const VecX<double>&, VecX<double>&, EvaluationDetails*);
-template void evaluate_rhs<AdScalar>(const Model&, double,
-                                     const std::vector<TrackFrameKinematics>&,
-                                     const VecX<AdScalar>&, VecX<AdScalar>&, EvaluationDetails*);
-template void compute_all_body_motions<double>(const Model&, double,
-                                               const std::vector<TrackFrameKinematics>&,
-                                               const VecX<double>&,
-                                               std::vector<BodyMotion<double>>&);
-template void compute_all_body_motions<AdScalar>(const Model&, double,
-                                                 const std::vector<TrackFrameKinematics>&,
-                                                 const VecX<AdScalar>&,
-                                                 std::vector<BodyMotion<AdScalar>>&);
+#define RAILSTAB_DEFINE_RHS(T)                                                               \
+  template void evaluate_rhs<T>(const ModelTpl<ParameterScalar<T>>&, Workspace<T>&, double,  \
+                                double, const VecX<T>&, VecX<T>&, EvaluationDetails*,        \
+                                ForceSelection);                                             \
+  template void compute_all_body_motions<T>(const ModelTpl<ParameterScalar<T>>&,             \
+                                            Workspace<T>&, double, double, const VecX<T>&);
+RAILSTAB_DEFINE_RHS(double)
+RAILSTAB_DEFINE_RHS(AdScalar)
+#undef RAILSTAB_DEFINE_RHS
 
 }  // namespace railstab

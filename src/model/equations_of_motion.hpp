@@ -1,9 +1,16 @@
 #pragma once
-// The right-hand side of the model, dx/dt = f(t, x), one templated code path
-// for simulation (double) and linearisation (AdScalar). Instantiated for both
-// in equations_of_motion.cpp only (other files see the extern declarations).
+// The right-hand side of the model, dx/dt = f(t, x; V), one templated code
+// path for simulation (double) and linearisation (AdScalar). Instantiated for
+// every scalar in equations_of_motion.cpp only (other files see the extern
+// declarations).
+//
+// x = [q; u; z] (model/model.hpp): dq/dt = u; du/dt from Newton-Euler of each
+// body (kinematics/body_motion.hpp) under gravity, the force elements
+// (elements/) and the wheel-rail contact (contact/); dz/dt from the elements
+// that own internal states.
 #include "contact/wheel_rail.hpp"
 #include "model/model.hpp"
+#include "model/workspace.hpp"
 
 #include <vector>
 
@@ -20,36 +27,46 @@ struct EvaluationDetails {
   std::vector<ContactSnapshot> contacts;
 };
 
-// Track frames of every body at time t (double: they depend on t only).
-std::vector<TrackFrameKinematics> track_frames_at(const Model& model, double t_s);
+// Which forces an evaluation includes. The IMEX integrator splits the model
+// into a stiff implicit part (dq/dt = u, contact and inertial terms) and the
+// rest (force elements and gravity): integrate/model_callbacks.hpp.
+enum class ForceSelection { all, contact_and_inertia };
 
-// dx/dt at time t. `frames` must come from track_frames_at(model, t_s).
 template <class T>
-void evaluate_rhs(const Model& model, double t_s, const std::vector<TrackFrameKinematics>& frames,
-                  const VecX<T>& x, VecX<T>& xdot, EvaluationDetails* details = nullptr);
+void evaluate_rhs(const ModelTpl<ParameterScalar<T>>& model, Workspace<T>& ws, double t_s,
+                  double speed_m_per_s, const VecX<T>& x, VecX<T>& xdot,
+                  EvaluationDetails* details = nullptr,
+                  ForceSelection forces = ForceSelection::all);
 
-// Convenience: computes the frames and checks the result is finite; throws
+// Convenience (allocates a workspace): checks the result is finite; throws
 // std::runtime_error naming the first non-finite state derivative.
-Eigen::VectorXd rhs(const Model& model, double t_s, const Eigen::VectorXd& x,
-                    EvaluationDetails* details = nullptr);
+Eigen::VectorXd rhs(const Model& model, double speed_m_per_s, double t_s,
+                    const Eigen::VectorXd& x, EvaluationDetails* details = nullptr,
+                    ForceSelection forces = ForceSelection::all);
 
-// Body motions of every body (for energy, output and tests).
+// Body motions of every body into ws.motions (for energy, output and tests).
 template <class T>
-void compute_all_body_motions(const Model& model, double t_s,
-                              const std::vector<TrackFrameKinematics>& frames, const VecX<T>& x,
-                              std::vector<BodyMotion<T>>& motions);
+void compute_all_body_motions(const ModelTpl<ParameterScalar<T>>& model, Workspace<T>& ws,
+                              double t_s, double speed_m_per_s, const VecX<T>& x);
 
-extern template void evaluate_rhs<double>(const Model&, double,
-                                          const std::vector<TrackFrameKinematics>&,
-                                          const VecX<double>&, VecX<double>&,
-                                          EvaluationDetails*);
-extern template void evaluate_rhs<AdScalar>(const Model&, double,
-                                            const std::vector<TrackFrameKinematics>&,
-                                            const VecX<AdScalar>&, VecX<AdScalar>&,
-                                            EvaluationDetails*);
-extern template void compute_all_body_motions<double>(const Model&, double,
-                                                      const std::vector<TrackFrameKinematics>&,
-                                                      const VecX<double>&,
-                                                      std::vector<BodyMotion<double>>&);
+// The two attachments of element e (body 1 may be the track frame of body 2).
+template <class T>
+std::pair<Attachment<T>, Attachment<T>> element_attachments(const ElementEnds& ends,
+                                                            Workspace<T>& ws) {
+  Attachment<T> a1 = ends.body1 == kTrackBody ? attachment_of<T>(ws.frames[ends.body2])
+                                              : attachment_of(ws.motions[ends.body1]);
+  return {a1, attachment_of(ws.motions[ends.body2])};
+}
+
+#define RAILSTAB_DECLARE_RHS(T)                                                              \
+  extern template void evaluate_rhs<T>(const ModelTpl<ParameterScalar<T>>&, Workspace<T>&,   \
+                                       double, double, const VecX<T>&, VecX<T>&,             \
+                                       EvaluationDetails*, ForceSelection);                  \
+  extern template void compute_all_body_motions<T>(const ModelTpl<ParameterScalar<T>>&,      \
+                                                   Workspace<T>&, double, double,            \
+                                                   const VecX<T>&);
+RAILSTAB_DECLARE_RHS(double)
+RAILSTAB_DECLARE_RHS(AdScalar)
+#undef RAILSTAB_DECLARE_RHS
 
 }  // namespace railstab

@@ -25,17 +25,18 @@ struct PlotSpec {
   std::string title, ylabel;
   int coordinate;  // 0..5
   double scale;    // to the plotted unit
-  std::function<bool(const ModelBody&)> include;
+  std::function<bool(const Body&)> include;
 };
 
 }  // namespace
 
-std::vector<std::string> plot_time_histories(const Model& model, const std::string& csv_path,
+std::vector<std::string> plot_time_histories(const Model& model, double speed_m_per_s,
+                                             const std::string& csv_path,
                                              const std::string& absolute_roll_csv_path,
                                              const std::string& output_prefix) {
-  const auto wheelsets = [](const ModelBody& b) { return b.is_wheelset; };
-  const auto others = [](const ModelBody& b) { return !b.is_wheelset; };
-  const auto all = [](const ModelBody&) { return true; };
+  const auto wheelsets = [](const Body& b) { return b.wheelset() != nullptr; };
+  const auto others = [](const Body& b) { return b.wheelset() == nullptr; };
+  const auto all = [](const Body&) { return true; };
   const std::vector<PlotSpec> plots = {
       {"wheelset_lateral", false, "Lateral shift of the wheelsets", "lateral shift y [mm]", 1, 1e3,
        wheelsets},
@@ -67,7 +68,7 @@ std::vector<std::string> plot_time_histories(const Model& model, const std::stri
       pngs.push_back(png);
       gp << "set output '" << png << "'\n"
          << "set title '" << model.name << ": " << p.title << " at "
-         << model.speed_m_per_s << " m/s'\n"
+         << speed_m_per_s << " m/s'\n"
          << "set ylabel '" << p.ylabel << "'\nplot ";
       for (size_t i = 0; i < cols.size(); ++i)
         gp << (i ? ", " : "") << "'" << (p.absolute_roll_file ? absolute_roll_csv_path : csv_path)

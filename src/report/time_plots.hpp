@@ -10,7 +10,8 @@
 namespace railstab {
 
 // Returns the PNG paths written. Throws std::runtime_error if gnuplot fails.
-std::vector<std::string> plot_time_histories(const Model& model, const std::string& csv_path,
+std::vector<std::string> plot_time_histories(const Model& model, double speed_m_per_s,
+                                             const std::string& csv_path,
                                              const std::string& absolute_roll_csv_path,
                                              const std::string& output_prefix);
 

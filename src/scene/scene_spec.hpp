@@ -14,6 +14,9 @@
 //   non-spinning intermediate frame I = Bz Bx.
 // - Curvature > 0 turns left (+y). Cant > 0 raises the right rail, i.e. the
 //   normal cant of a left-hand curve; the track roll angle is -asin(cant / D).
+#include "core/coordinates.hpp"
+#include "elements/element.hpp"
+#include "scene/track_spec.hpp"
 #include "scene/integrator_kind.hpp"
 
 #include <Eigen/Dense>
@@ -23,39 +26,6 @@
 #include <vector>
 
 namespace railstab {
-
-enum class CoordinateIndex { x = 0, y = 1, z = 2, roll = 3, pitch = 4, yaw = 5 };
-inline constexpr int kCoordinatesPerBody = 6;
-// CSV / report names of the six coordinates, units in the name.
-inline const std::array<std::string, 6> kCoordinateNames = {"x_m", "y_m", "z_m",
-                                                            "roll_rad", "pitch_rad", "yaw_rad"};
-// Scene-file names of the six coordinates (for `free = [...]`).
-inline const std::array<std::string, 6> kCoordinateKeys = {"x", "y", "z", "roll", "pitch", "yaw"};
-
-// --- Track --------------------------------------------------------------------
-enum class TrackSegmentKind { tangent, clothoid, arc };
-
-// A segment starts where the previous one ends (position, heading, curvature,
-// cant), so continuity holds by construction. Curvature varies linearly over a
-// clothoid and is constant on tangent (zero) and arc (= start curvature).
-// Cant varies linearly over every segment from its start to `end_cant_m`.
-struct TrackSegmentSpec {
-  TrackSegmentKind kind = TrackSegmentKind::tangent;
-  double length_m = 0.0;
-  double end_curvature_per_m = 0.0;  // clothoid only; tangent 0, arc = start
-  double end_cant_m = 0.0;
-};
-
-struct TrackSpec {
-  double start_x_m = 0.0;
-  double start_y_m = 0.0;
-  double start_z_m = 0.0;
-  double start_heading_rad = 0.0;
-  double start_curvature_per_m = 0.0;
-  double start_cant_m = 0.0;
-  double rail_contact_distance_m = 1.5;  // D in phi = asin(cant / D) (ERRATA 2)
-  std::vector<TrackSegmentSpec> segments;
-};
 
 // --- Wheel-rail contact ---------------------------------------------------------
 enum class ContactGeometryKind {
@@ -119,25 +89,10 @@ struct BodySpec {
 };
 
 // --- Force elements -------------------------------------------------------------------
-enum class ElementKind {
-  spring_damper_3d,          // thesis 4.82-4.95, axes of body1's frame
-  rotational_spring_damper   // bushing: moment from relative rotation
-};
-
-inline const std::string kTrackBodyName = "track";
-
-struct ElementSpec {
-  std::string name;
-  ElementKind kind = ElementKind::spring_damper_3d;
-  std::string body1;  // may be "track": the track frame of body2 (moves at V)
-  std::string body2;
-  Eigen::Vector3d point1_m = Eigen::Vector3d::Zero();  // in body1's frame
-  Eigen::Vector3d point2_m = Eigen::Vector3d::Zero();  // in body2's frame
-  // spring_damper_3d: N/m, N s/m, N; rotational: N m/rad, N m s/rad, N m.
-  Eigen::Vector3d stiffness = Eigen::Vector3d::Zero();
-  Eigen::Vector3d damping = Eigen::Vector3d::Zero();
-  Eigen::Vector3d actuator = Eigen::Vector3d::Zero();
-};
+// An element as the scene gives it is the model's element type itself
+// (elements/element.hpp) with body names; the builder resolves the names and
+// sets what is measured from the nominal configuration.
+using ElementSpec = ElementTpl<double>;
 
 // --- Analyses ---------------------------------------------------------------------------
 enum class PreloadMode {

@@ -35,9 +35,9 @@ std::vector<ModeReport> describe_modes(const Model& model, const LinearModel& li
     std::vector<Participation> parts;
     for (size_t i = 0; i < lin.kept_states.size(); ++i) {
       const int k = lin.kept_states[i];
-      if (k < n) continue;
+      if (!model.is_rate(k)) continue;  // positions and element states carry no kinetic energy
       const auto [b, c] = model.coordinate_of_state[k - n];
-      const ModelBody& body = model.bodies[b];
+      const Body& body = model.bodies[b];
       const double inertia = c < 3 ? body.mass_kg : body.inertia_kg_m2(c - 3);
       const double e = inertia * std::norm(p.vector(Eigen::Index(i)));
       total += e;

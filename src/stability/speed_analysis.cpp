@@ -7,17 +7,6 @@
 
 namespace railstab {
 
-Model model_at_speed(const Model& base, double speed_m_per_s) {
-  Model m = base;
-  const double dv = speed_m_per_s - base.speed_m_per_s;
-  m.speed_m_per_s = speed_m_per_s;
-  for (ModelBody& b : m.bodies)
-    if (b.contact >= 0)
-      b.initial_rate(int(CoordinateIndex::pitch)) +=
-          dv / m.contacts[b.contact].spec.nominal_rolling_radius_m;
-  return m;
-}
-
 std::string eigen_solver_name(EigenSolverKind kind) {
   switch (kind) {
     case EigenSolverKind::automatic: return "auto";
@@ -40,32 +29,32 @@ std::vector<EigenPair> solve_eigen(const Eigen::MatrixXd& A, const StabilityOpti
   return eigen_arpack_shift_invert(A, a);
 }
 
-SpeedStability::SpeedStability(const Model& base, const Eigen::VectorXd& equilibrium_guess,
-                               StabilityOptions options)
-    : base_(base), options_(options), last_equilibrium_(equilibrium_guess),
-      last_speed_(base.speed_m_per_s) {}
+SpeedStability::SpeedStability(const Model& model, const Eigen::VectorXd& equilibrium_guess,
+                               double guess_speed_m_per_s, StabilityOptions options)
+    : model_(model), options_(options), last_equilibrium_(equilibrium_guess),
+      last_speed_(guess_speed_m_per_s) {}
 
 StabilityPoint SpeedStability::at(double speed_m_per_s) {
   const auto start = std::chrono::steady_clock::now();
-  const Model model = model_at_speed(base_, speed_m_per_s);
+  const Model& model = model_;
   // Continuation: spin rates scale with the speed.
   Eigen::VectorXd guess = last_equilibrium_;
   const int n = model.n_coordinates;
   for (int k = 0; k < n; ++k) {
     const auto [b, c] = model.coordinate_of_state[k];
-    if (model.bodies[b].contact >= 0 && c == int(CoordinateIndex::pitch) && last_speed_ > 0.0)
+    if (model.bodies[b].wheelset() && c == int(CoordinateIndex::pitch) && last_speed_ > 0.0)
       guess(n + k) *= speed_m_per_s / last_speed_;
   }
   StabilityPoint p;
   p.speed_m_per_s = speed_m_per_s;
   EquilibriumOptions eq_opt;
   eq_opt.time_s = options_.time_s;
-  p.equilibrium = solve_equilibrium(model, guess, eq_opt);
+  p.equilibrium = solve_equilibrium(model, speed_m_per_s, guess, eq_opt);
   last_equilibrium_ = p.equilibrium.state;
   last_speed_ = speed_m_per_s;
   LinearizationOptions lin_opt;
   lin_opt.time_s = options_.time_s;
-  p.linear = linearize(model, p.equilibrium.state, lin_opt);
+  p.linear = linearize(model, speed_m_per_s, p.equilibrium.state, lin_opt);
   p.solver_used = resolved_solver(options_.solver, int(p.linear.A.rows()));
   p.modes = describe_modes(model, p.linear, solve_eigen(p.linear.A, options_));
   p.least_stable = least_stable_mode(p.modes, options_.max_frequency_hz);
@@ -74,10 +63,10 @@ StabilityPoint SpeedStability::at(double speed_m_per_s) {
         p.modes[i].eigenvalue.real() > 0.0 && p.modes[i].eigenvalue.imag() >= 0.0)
       p.unstable_above_band.push_back(i);
   p.max_real_part = p.least_stable >= 0 ? p.modes[p.least_stable].eigenvalue.real() : -INFINITY;
-  for (const ModelBody& b : model.bodies) {
+  for (const Body& b : model.bodies) {
     const int k = b.state_index[int(CoordinateIndex::y)];
-    if (b.contact < 0 || k < 0) continue;
-    const double clearance = model.contacts[b.contact].spec.flange_clearance_m;
+    if (!b.wheelset() || k < 0) continue;
+    const double clearance = model.contacts[b.wheelset()->contact].spec.flange_clearance_m;
     if (std::abs(p.equilibrium.state(k)) > clearance && p.validity_warning.empty()) {
       std::ostringstream w;
       w << b.name << " steady lateral shift " << p.equilibrium.state(k) * 1e3
@@ -90,7 +79,8 @@ StabilityPoint SpeedStability::at(double speed_m_per_s) {
   return p;
 }
 
-CriticalSpeedResult find_critical_speed(const Model& base, const Eigen::VectorXd& equilibrium_guess,
+CriticalSpeedResult find_critical_speed(const Model& model, const Eigen::VectorXd& equilibrium_guess,
+                                        double guess_speed_m_per_s,
                                         const CriticalSpeedOptions& options) {
   if (!(options.from_m_per_s > 0.0) || !(options.to_m_per_s > options.from_m_per_s) ||
       !(options.grid_step_m_per_s > 0.0) || !(options.tolerance_m_per_s > 0.0))
@@ -101,7 +91,7 @@ CriticalSpeedResult find_critical_speed(const Model& base, const Eigen::VectorXd
   r.from_m_per_s = options.from_m_per_s;
   r.to_m_per_s = options.to_m_per_s;
   r.speed_tolerance_m_per_s = options.tolerance_m_per_s;
-  SpeedStability stability(base, equilibrium_guess, options.stability);
+  SpeedStability stability(model, equilibrium_guess, guess_speed_m_per_s, options.stability);
   auto report = [&](const StabilityPoint& p) {
     ++r.evaluations;
     if (options.progress) {
@@ -143,7 +133,7 @@ CriticalSpeedResult find_critical_speed(const Model& base, const Eigen::VectorXd
     // Bisection on the largest real part: robust when the least stable mode
     // changes inside the bracket; 0.01 m/s from a 5 m/s bracket is 9 steps.
     StabilityPoint lo = r.grid[crossing - 1], hi = r.grid[crossing];
-    SpeedStability refine(base, lo.equilibrium.state, options.stability);
+    SpeedStability refine(model, lo.equilibrium.state, lo.speed_m_per_s, options.stability);
     while (hi.speed_m_per_s - lo.speed_m_per_s > options.tolerance_m_per_s) {
       const double mid = 0.5 * (lo.speed_m_per_s + hi.speed_m_per_s);
       StabilityPoint p = refine.at(mid);

@@ -53,19 +53,18 @@ struct StabilityPoint {
   double seconds = 0.0;           // wall time of this point
 };
 
-// The model with its speed changed (track frames and wheelset spin rates).
-Model model_at_speed(const Model& base, double speed_m_per_s);
-
-// Evaluates speeds in sequence, each equilibrium starting from the previous
-// one (continuation).
+// Evaluates speeds in sequence on one model, each equilibrium starting from
+// the previous one (continuation). The model must outlive this object.
 class SpeedStability {
  public:
-  SpeedStability(const Model& base, const Eigen::VectorXd& equilibrium_guess,
-                 StabilityOptions options = {});
+  // `guess_speed_m_per_s`: the speed the guess is an equilibrium of (its
+  // wheelset spin rates are scaled from it).
+  SpeedStability(const Model& model, const Eigen::VectorXd& equilibrium_guess,
+                 double guess_speed_m_per_s, StabilityOptions options = {});
   StabilityPoint at(double speed_m_per_s);
 
  private:
-  Model base_;
+  const Model& model_;
   StabilityOptions options_;
   Eigen::VectorXd last_equilibrium_;
   double last_speed_;
@@ -103,7 +102,8 @@ struct CriticalSpeedOptions {
 // non-oscillatory or neutral modes and for Im < 0 partners).
 std::vector<std::vector<int>> track_modes(const std::vector<StabilityPoint>& grid);
 
-CriticalSpeedResult find_critical_speed(const Model& base, const Eigen::VectorXd& equilibrium_guess,
+CriticalSpeedResult find_critical_speed(const Model& model, const Eigen::VectorXd& equilibrium_guess,
+                                        double guess_speed_m_per_s,
                                         const CriticalSpeedOptions& options);
 
 }  // namespace railstab

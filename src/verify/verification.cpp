@@ -20,7 +20,7 @@ int lateral_signal_state(const Model& model, const LinearModel& lin, const Eigen
   double largest = 0.0;
   for (size_t i = 0; i < lin.kept_states.size(); ++i) {
     const int k = lin.kept_states[i];
-    if (k >= model.n_coordinates) continue;
+    if (!model.is_position(k)) continue;
     if (model.coordinate_of_state[size_t(k)].second != int(CoordinateIndex::y)) continue;
     if (std::abs(v(Eigen::Index(i))) > largest) {
       largest = std::abs(v(Eigen::Index(i)));
@@ -51,14 +51,15 @@ Eigen::VectorXd mode_perturbation(const Model& model, const LinearModel& lin,
 
 }  // namespace
 
-VerificationResult verify_least_stable_mode(const Model& model, const Eigen::VectorXd& equilibrium,
+VerificationResult verify_least_stable_mode(const Model& model, double speed_m_per_s,
+                                            const Eigen::VectorXd& equilibrium,
                                             const VerificationOptions& options) {
   VerificationResult out;
-  out.speed_m_per_s = model.speed_m_per_s;
+  out.speed_m_per_s = speed_m_per_s;
   StabilityOptions so;
   so.max_frequency_hz = options.hunting_band_hz;
-  SpeedStability stability(model, equilibrium, so);
-  const StabilityPoint point = stability.at(model.speed_m_per_s);
+  SpeedStability stability(model, equilibrium, speed_m_per_s, so);
+  const StabilityPoint point = stability.at(speed_m_per_s);
   // Hunting is a lateral mode: a lightly damped longitudinal or vertical
   // mode (e.g. bogie longitudinal on the thesis vehicle at 100 m/s) may be
   // less damped but moves no wheelset laterally, so it cannot be fitted on
@@ -88,8 +89,8 @@ VerificationResult verify_least_stable_mode(const Model& model, const Eigen::Vec
   double track_limit_s = std::numeric_limits<double>::infinity();
   std::string first_out;
   for (int b = 0; b < int(model.bodies.size()); ++b) {
-    const double s0 = model.arc_length_of(b, 0.0);
-    const double t_b = (model.track.uniform_stretch_end_m(s0) - s0) / model.speed_m_per_s;
+    const double s0 = model.arc_length_of(b, 0.0, speed_m_per_s);
+    const double t_b = (model.track.uniform_stretch_end_m(s0) - s0) / speed_m_per_s;
     if (t_b < track_limit_s) track_limit_s = t_b, first_out = model.bodies[size_t(b)].name;
   }
   if (track_limit_s < t_end) {
@@ -100,7 +101,7 @@ VerificationResult verify_least_stable_mode(const Model& model, const Eigen::Vec
       std::ostringstream msg;
       msg << "verify: " << first_out << " leaves the uniform stretch of track (tangent or arc at "
           << "constant cant) it starts on after " << track_limit_s << " s at "
-          << model.speed_m_per_s << " m/s, short of the " << needed
+          << speed_m_per_s << " m/s, short of the " << needed
           << " s needed to settle and fit two periods of the mode; start inside a longer "
              "tangent or arc (--arc-length) or settle for fewer periods (--settle-periods)";
       throw std::runtime_error(msg.str());
@@ -120,7 +121,7 @@ VerificationResult verify_least_stable_mode(const Model& model, const Eigen::Vec
       options.initial_state ? *options.initial_state : Eigen::VectorXd(point.equilibrium.state + dx);
   if (x0.size() != point.equilibrium.state.size())
     throw std::invalid_argument("verify: the given initial state has the wrong size");
-  out.trajectory = integrate(model, x0, io);
+  out.trajectory = integrate(model, speed_m_per_s, x0, io);
   out.integration_seconds = out.trajectory.stats.wall_seconds;
   out.integrator = integrator_name(io.kind);
   out.relative_tolerance = io.relative_tolerance;
@@ -161,7 +162,7 @@ VerificationResult verify_least_stable_mode(const Model& model, const Eigen::Vec
   IntegrationOptions tight = io;
   tight.relative_tolerance /= 100.0;
   tight.absolute_tolerance /= 100.0;
-  const Trajectory ref = integrate(model, x0, tight);
+  const Trajectory ref = integrate(model, speed_m_per_s, x0, tight);
   if (ref.times_s.size() != out.trajectory.times_s.size() || !ref.stopped_early.empty())
     throw std::runtime_error(
         "verify: the run at 100x tighter tolerances did not reach the same end (" +

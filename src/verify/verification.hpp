@@ -53,7 +53,8 @@ struct VerificationResult {
   std::vector<double> window_times, window_signal;
 };
 
-VerificationResult verify_least_stable_mode(const Model& model, const Eigen::VectorXd& equilibrium,
+VerificationResult verify_least_stable_mode(const Model& model, double speed_m_per_s,
+                                            const Eigen::VectorXd& equilibrium,
                                             const VerificationOptions& options = {});
 
 }  // namespace railstab

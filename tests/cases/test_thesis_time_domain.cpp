@@ -1,6 +1,6 @@
 // Every case scene runs; the thesis results of chapter 5 are reproduced
 // qualitatively (ERRATA 15).
-#include "cli/scene_setup.hpp"
+#include "setup/prepare_scene.hpp"
 #include "integrate/integrator.hpp"
 
 #include <gtest/gtest.h>
@@ -18,7 +18,7 @@ Trajectory run(const PreparedScene& scene, double t_end) {
   IntegrationOptions opt = integration_options_for(scene.spec.simulation);
   opt.t_end_s = t_end;
   opt.output_interval_s = 0.01;
-  return integrate(scene.model, perturbed_initial_state(scene), opt);
+  return integrate(scene.model, scene.model.scene_speed_m_per_s, perturbed_initial_state(scene), opt);
 }
 
 double max_abs_lateral(const PreparedScene& s, const Trajectory& traj, const std::string& body,

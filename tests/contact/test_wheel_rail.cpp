@@ -19,9 +19,9 @@ ModelContact thesis_contact() {
   return c;
 }
 
-ModelBody wheelset_body() {
-  ModelBody b;
-  b.is_wheelset = true;
+Body wheelset_body() {
+  Body b;
+  b.kind = WheelsetKind{0, 0.45};
   b.mass_kg = 1500.0;
   b.inertia_kg_m2 = Eigen::Vector3d(799.35, 93.75, 799.35);
   for (int i = 0; i < 6; ++i) b.state_index[i] = i;
@@ -44,7 +44,7 @@ const Track& straight() {
 TEST(WheelRail, KnifeEdgePenetrationAtCentredPosition) {
   const ModelContact c = thesis_contact();
   const TrackFrameKinematics k = straight().frame_at(100.0, 20.0);
-  const ModelBody body = wheelset_body();
+  const Body body = wheelset_body();
   for (double dz : {0.0, 1e-4}) {
     Eigen::Matrix<double, 6, 1> q = Eigen::Matrix<double, 6, 1>::Zero(), qd = q;
     q(2) = 0.45 - dz;

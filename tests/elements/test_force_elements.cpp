@@ -1,7 +1,8 @@
 // Force elements: springs conservative, dampers dissipate exactly
 // -dd/dt^T C dd/dt, forces and moments equal and opposite (Drake's
 // LinearSpringDamper test, Chrono's ValidateEnergy).
-#include "elements/spring_damper.hpp"
+#include "elements/element.hpp"
+#include "scene/scene_spec.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,7 +13,7 @@ using namespace railstab;
 namespace {
 
 struct Pair {
-  ModelBody body[2];
+  BodyTpl<double> body[2];
   TrackFrameKinematics frame[2];
   Eigen::Matrix<double, 6, 1> q[2], qd[2];
 };
@@ -23,7 +24,7 @@ Pair random_pair(std::mt19937& rng, bool wheelset1) {
   for (int i = 0; i < 2; ++i) {
     p.body[i].mass_kg = 1000.0;
     p.body[i].inertia_kg_m2 = Eigen::Vector3d(300, 400, 500);
-    p.body[i].is_wheelset = (i == 0 && wheelset1);
+    if (i == 0 && wheelset1) p.body[i].kind = WheelsetKind{};
     p.frame[i].R_WT = track_rotation(0.3 * u(rng), 0.0, 0.05 * u(rng));
     p.frame[i].geometry.p_WT_W = Eigen::Vector3d(10 * u(rng), u(rng), 0.0);
     for (int c = 0; c < 6; ++c) {
@@ -43,41 +44,111 @@ std::array<BodyMotion<double>, 2> motions(const Pair& p, double h) {
   return m;
 }
 
-ModelElement element(ElementKind kind, std::mt19937& rng, bool damped) {
-  std::uniform_real_distribution<double> u(0.2, 1.0);
-  ModelElement e;
-  e.kind = kind;
-  e.point1_m = Eigen::Vector3d(0.5, -0.3, 0.2);
-  e.point2_m = Eigen::Vector3d(-0.4, 0.6, 0.1);
-  e.stiffness = kind == ElementKind::rotational_spring_damper
-                    ? Eigen::Vector3d::Constant(3e5)  // isotropic: exactly conservative
-                    : Eigen::Vector3d(1e5 * u(rng), 2e5 * u(rng), 3e5 * u(rng));
-  if (damped) e.damping = Eigen::Vector3d(1e3 * u(rng), 2e3 * u(rng), 3e3 * u(rng));
-  // A constant moment is conservative only to first order in the rotation
-  // (the rotation vector is not a set of coordinates whose gradient is it),
-  // so the rotational element is tested without one.
-  if (kind == ElementKind::spring_damper_3d) e.preload = Eigen::Vector3d(100.0, -50.0, 30.0);
-  e.free_vector_m = Eigen::Vector3d(0.1, 0.0, -0.05);
-  return e;
+// The element kinds under test, each with random parameters; `damped`
+// false gives the purely elastic twin.
+enum class Kind { spring_3d, rotational, series, line_linear, line_table, bump_stop, traction_rod };
+const char* kind_name(Kind k) {
+  switch (k) {
+    case Kind::spring_3d: return "spring_3d";
+    case Kind::rotational: return "rotational";
+    case Kind::series: return "series";
+    case Kind::line_linear: return "line_linear";
+    case Kind::line_table: return "line_table";
+    case Kind::bump_stop: return "bump_stop";
+    case Kind::traction_rod: return "traction_rod";
+  }
+  return "?";
 }
 
-double potential(const ModelElement& e, std::array<BodyMotion<double>, 2>& m) {
-  const Attachment<double> a1 = attachment_of(m[0]), a2 = attachment_of(m[1]);
-  if (e.kind == ElementKind::spring_damper_3d) {
-    const Eigen::Vector3d dd = spring_deflection(e, a1, a2).d - e.free_vector_m;
-    return 0.5 * dd.dot(e.stiffness.cwiseProduct(dd)) + e.preload.dot(dd);
+ElementSpec element(Kind kind, std::mt19937& rng, bool damped) {
+  std::uniform_real_distribution<double> u(0.2, 1.0);
+  ElementEnds ends;
+  ends.point1_m = Eigen::Vector3d(0.5, -0.3, 0.2);
+  ends.point2_m = Eigen::Vector3d(-0.4, 0.6, 0.1);
+  const double c = damped ? 1.0 : 0.0;
+  switch (kind) {
+    case Kind::spring_3d: {
+      SpringDamper3d<double> e;
+      e.ends = ends;
+      e.stiffness_N_per_m = Eigen::Vector3d(1e5 * u(rng), 2e5 * u(rng), 3e5 * u(rng));
+      e.damping_N_s_per_m = c * Eigen::Vector3d(1e3 * u(rng), 2e3 * u(rng), 3e3 * u(rng));
+      e.preload_N = Eigen::Vector3d(100.0, -50.0, 30.0);
+      e.free_vector_m = Eigen::Vector3d(0.1, 0.0, -0.05);
+      return e;
+    }
+    case Kind::rotational: {
+      RotationalSpringDamper<double> e;
+      e.ends = ends;
+      // Isotropic and without a constant moment: exactly conservative (a
+      // constant moment is conservative only to first order in the rotation).
+      e.stiffness_N_m_per_rad = Eigen::Vector3d::Constant(3e5);
+      e.damping_N_m_s_per_rad = c * Eigen::Vector3d(1e3 * u(rng), 2e3 * u(rng), 3e3 * u(rng));
+      return e;
+    }
+    case Kind::series: {
+      SeriesSpringDamper<double> e;
+      e.ends = ends;
+      e.series_stiffness_N_per_m = 2e6 * u(rng);
+      e.set_damper(ForceCharacteristic<double>::linear(1e4 * u(rng)));
+      e.free_length_m = 1.1;
+      return e;
+    }
+    case Kind::line_linear:
+    case Kind::line_table: {
+      LineSpringDamper<double> e;
+      e.ends = ends;
+      e.free_length_m = 1.1;
+      e.preload_N = 250.0;
+      if (kind == Kind::line_linear) {
+        e.spring = ForceCharacteristic<double>::linear(1e5 * u(rng));
+        e.damper = ForceCharacteristic<double>::linear(c * 2e3 * u(rng));
+      } else {
+        e.spring = ForceCharacteristic<double>::table({-0.5, -0.1, 0.0, 0.05, 0.4},
+                                                      {-9e4, -1e4, 0.0, 4e3, 1.2e5});
+        e.damper = ForceCharacteristic<double>::table({-2.0, -0.1, 0.1, 2.0},  // blow-off
+                                                      {-c * 4e3, -c * 2e3, c * 2e3, c * 4e3});
+      }
+      return e;
+    }
+    case Kind::bump_stop: {
+      BumpStop<double> e;
+      e.ends = ends;
+      e.axis = Eigen::Vector3d(0.2, 1.0, 0.1).normalized();
+      e.clearance_m = 0.02;
+      e.stiffness_N_per_m = 5e5 * u(rng);
+      e.progressive_stiffness_N_per_m3 = 1e8 * u(rng);
+      e.contact_smoothing_m = 0.005;
+      e.free_vector_m = Eigen::Vector3d(0.1, 0.0, -0.05);
+      return e;
+    }
+    case Kind::traction_rod: {
+      TractionRod<double> e;
+      e.ends = ends;
+      e.stiffness_N_per_m = 5e6 * u(rng);
+      e.damping_N_s_per_m = c * 5e3 * u(rng);
+      e.preload_N = -300.0;
+      e.free_length_m = 1.1;
+      return e;
+    }
   }
-  const Eigen::Vector3d th = rotation_vector<double>(a1.R_WF.transpose() * a2.R_WF);
-  return 0.5 * th.dot(e.stiffness.cwiseProduct(th)) + e.preload.dot(th);
+  throw std::logic_error("kind");
+}
+
+// Internal state of the element (series: damper elongation), held fixed.
+const double kInternalState = 0.013;
+
+double potential(const ElementSpec& e, std::array<BodyMotion<double>, 2>& m) {
+  const Attachment<double> a1 = attachment_of(m[0]), a2 = attachment_of(m[1]);
+  return std::visit([&](const auto& el) { return el.potential(a1, a2, &kInternalState); }, e);
 }
 
 // Power of the element's forces and moments on both bodies.
-double element_power(const ModelElement& e, std::array<BodyMotion<double>, 2>& m,
+double element_power(const ElementSpec& e, std::array<BodyMotion<double>, 2>& m,
                      Eigen::Vector3d* net_force = nullptr, Eigen::Vector3d* net_moment = nullptr) {
   for (auto& mi : m) mi.force_W.setZero(), mi.moment_W.setZero();
   const Attachment<double> a1 = attachment_of(m[0]), a2 = attachment_of(m[1]);
-  if (e.kind == ElementKind::spring_damper_3d) apply_spring_damper_3d(e, a1, a2);
-  else apply_rotational_spring_damper(e, a1, a2);
+  double z_rate = 0.0;
+  std::visit([&](const auto& el) { el.apply(a1, a2, &kInternalState, &z_rate); }, e);
   double power = 0.0;
   Eigen::Vector3d F = Eigen::Vector3d::Zero(), M = Eigen::Vector3d::Zero();
   for (auto& mi : m) {
@@ -92,45 +163,62 @@ double element_power(const ModelElement& e, std::array<BodyMotion<double>, 2>& m
 
 }  // namespace
 
-class ElementKinds : public ::testing::TestWithParam<std::tuple<ElementKind, bool>> {};
+class ElementKinds : public ::testing::TestWithParam<std::tuple<Kind, bool>> {};
 
-// Springs (3D: with preload) are conservative: element power = -dV/dt, checked
-// against a central difference of V along the motion (h = 1e-6 s: error
-// ~1e-12 relative), to 1e-6 relative.
+// Springs are conservative: element power = -dV/dt (internal states held),
+// checked against a central difference of V along the motion (h = 1e-6 s:
+// error ~1e-12 relative), to 1e-6 relative.
 TEST_P(ElementKinds, SpringIsConservative) {
   const auto [kind, wheelset1] = GetParam();
   std::mt19937 rng(11);
   for (int trial = 0; trial < 20; ++trial) {
     Pair p = random_pair(rng, wheelset1);
     if (wheelset1) p.qd[0](4) = 0.0;  // the axle-box frame does not spin; V ignores pitch
-    const ModelElement e = element(kind, rng, false);
+    const ElementSpec e = element(kind, rng, false);
     const double h = 1e-6;
     auto mp = motions(p, h), mm = motions(p, -h), m0 = motions(p, 0.0);
     const double dVdt = (potential(e, mp) - potential(e, mm)) / (2 * h);
     const double power = element_power(e, m0);
-    EXPECT_NEAR(power, -dVdt, 1e-6 * std::max(1.0, std::abs(dVdt)));
+    EXPECT_NEAR(power, -dVdt, 1e-6 * std::max(1.0, std::abs(dVdt))) << kind_name(kind);
   }
 }
 
-// Dampers dissipate: power of the damping part = -r^T C r <= 0, r = dd/dt
-// for the 3D element, r = relative angular velocity for the rotational one.
+// Dampers dissipate: the damping part's power is <= 0 and, for the linear
+// kinds, -r^T C r (r: dd/dt for the 3D element, the relative angular
+// velocity for the rotational one, dl/dt for line elements).
 TEST_P(ElementKinds, DamperDissipates) {
   const auto [kind, wheelset1] = GetParam();
+  if (kind == Kind::series || kind == Kind::bump_stop) GTEST_SKIP() << "no parallel damper";
   std::mt19937 rng(5);
   for (int trial = 0; trial < 20; ++trial) {
     const Pair p = random_pair(rng, wheelset1);
-    ModelElement damped = element(kind, rng, true);
-    ModelElement elastic = damped;
-    elastic.damping.setZero();
+    std::mt19937 rng_copy = rng;
+    const ElementSpec damped = element(kind, rng, true);
+    const ElementSpec elastic = element(kind, rng_copy, false);
     auto m = motions(p, 0.0);
-    const double damper_power = element_power(damped, m) - element_power(elastic, m);
+    const double elastic_power = element_power(elastic, m);
+    const double damper_power = element_power(damped, m) - elastic_power;
     const Attachment<double> a1 = attachment_of(m[0]), a2 = attachment_of(m[1]);
-    const Eigen::Vector3d rate = kind == ElementKind::spring_damper_3d
-                                     ? spring_deflection(damped, a1, a2).d_rate
-                                     : Eigen::Vector3d(a1.R_WF.transpose() * (a2.w_W - a1.w_W));
-    const double expected = -rate.dot(damped.damping.cwiseProduct(rate));
-    EXPECT_LE(damper_power, 0.0);
-    EXPECT_NEAR(damper_power, expected, 1e-9 * std::abs(expected));
+    const ElementEnds& ends = ends_of(damped);
+    double expected = 0.0;
+    if (const auto* e = std::get_if<SpringDamper3d<double>>(&damped)) {
+      const Eigen::Vector3d r = axis_deflection(a1, ends.point1_m, a2, ends.point2_m).d_rate;
+      expected = -r.dot(e->damping_N_s_per_m.cwiseProduct(r));
+    } else if (const auto* e = std::get_if<RotationalSpringDamper<double>>(&damped)) {
+      const Eigen::Vector3d r = a1.R_WF.transpose() * (a2.w_W - a1.w_W);
+      expected = -r.dot(e->damping_N_m_s_per_rad.cwiseProduct(r));
+    } else {
+      const double r = line_motion(a1, ends.point1_m, a2, ends.point2_m).rate_m_per_s;
+      if (const auto* e = std::get_if<LineSpringDamper<double>>(&damped))
+        expected = -e->damper.value(r) * r;
+      else if (const auto* e = std::get_if<TractionRod<double>>(&damped))
+        expected = -e->damping_N_s_per_m * r * r;
+    }
+    EXPECT_LE(damper_power, 0.0) << kind_name(kind);
+    // The damper's power is a difference of two evaluations: round-off of
+    // the elastic part's power counts as well.
+    EXPECT_NEAR(damper_power, expected, 1e-9 * (std::abs(expected) + std::abs(elastic_power)))
+        << kind_name(kind);
   }
 }
 
@@ -140,18 +228,19 @@ TEST_P(ElementKinds, EqualAndOpposite) {
   std::mt19937 rng(2);
   for (int trial = 0; trial < 20; ++trial) {
     const Pair p = random_pair(rng, wheelset1);
-    const ModelElement e = element(kind, rng, true);
+    const ElementSpec e = element(kind, rng, true);
     auto m = motions(p, 0.0);
     Eigen::Vector3d F, M;
     element_power(e, m, &F, &M);
     const double scale = m[0].force_W.norm() * 20.0 + m[0].moment_W.norm() + 1.0;
-    EXPECT_LT(F.norm(), 1e-12 * scale);
-    EXPECT_LT(M.norm(), 1e-11 * scale);
+    EXPECT_LT(F.norm(), 1e-12 * scale) << kind_name(kind);
+    EXPECT_LT(M.norm(), 1e-11 * scale) << kind_name(kind);
   }
 }
 
 INSTANTIATE_TEST_SUITE_P(
     Elements, ElementKinds,
-    ::testing::Combine(::testing::Values(ElementKind::spring_damper_3d,
-                                         ElementKind::rotational_spring_damper),
+    ::testing::Combine(::testing::Values(Kind::spring_3d, Kind::rotational, Kind::series,
+                                         Kind::line_linear, Kind::line_table, Kind::bump_stop,
+                                         Kind::traction_rod),
                        ::testing::Bool()));

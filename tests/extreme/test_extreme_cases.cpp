@@ -8,7 +8,7 @@
 // What each scene stresses and expects, and where its numbers come from, is
 // in the header of its case file. Run time of this file: about 8 s on one
 // core, 5 s of it the 60 s conservative run (each test prints its times).
-#include "cli/scene_setup.hpp"
+#include "setup/prepare_scene.hpp"
 #include "integrate/integrator.hpp"
 #include "model/energy.hpp"
 #include "model/equations_of_motion.hpp"
@@ -53,7 +53,7 @@ ContactHistory contact_history(const Model& model, const Trajectory& traj) {
   ContactHistory h;
   for (size_t i = 0; i < traj.states.size(); ++i) {
     EvaluationDetails d;
-    rhs(model, traj.times_s[i], traj.states[i], &d);
+    rhs(model, model.scene_speed_m_per_s, traj.times_s[i], traj.states[i], &d);
     for (const ContactSnapshot& c : d.contacts) {
       h.min_normal_force_N = std::min(h.min_normal_force_N, c.wheel.normal_force_N);
       if (c.wheel.normal_force_N <= 0.0 && h.first_loss_s < 0.0) {
@@ -108,7 +108,7 @@ RunOutcome run_scene(const PreparedScene& scene, IntegrationOptions opt) {
   RunOutcome out;
   const auto start = std::chrono::steady_clock::now();
   try {
-    out.trajectory = integrate(scene.model, perturbed_initial_state(scene), opt);
+    out.trajectory = integrate(scene.model, scene.model.scene_speed_m_per_s, perturbed_initial_state(scene), opt);
   } catch (const std::exception& e) {
     out.error = e.what();
   }
@@ -147,7 +147,8 @@ StabilityPoint stability_at(const PreparedScene& s, EigenSolverKind solver) {
   opt.solver = solver;
   const double f = kinematic_hunting_frequency_hz(s.spec.speed_m_per_s);
   opt.arpack_shift = {-0.1 * 2.0 * M_PI * f, 2.0 * M_PI * f};
-  return SpeedStability(s.model, s.equilibrium.state, opt).at(s.spec.speed_m_per_s);
+  return SpeedStability(s.model, s.equilibrium.state, s.speed_m_per_s, opt)
+      .at(s.spec.speed_m_per_s);
 }
 
 // Residual ||A v - lambda v|| / (||A||_F ||v||) recomputed here from the
@@ -406,12 +407,12 @@ double max_spin_change(const Model& m, const Trajectory& traj) {
   std::vector<double> first;
   for (size_t i = 0; i < traj.states.size(); ++i) {
     const double t = traj.times_s[i];
-    std::vector<BodyMotion<double>> motions;
-    compute_all_body_motions<double>(m, t, track_frames_at(m, t), traj.states[i], motions);
+    Workspace<double> ws(m);
+    compute_all_body_motions<double>(m, ws, t, m.scene_speed_m_per_s, traj.states[i]);
     size_t w = 0;
     for (size_t b = 0; b < m.bodies.size(); ++b) {
-      if (!m.bodies[b].is_wheelset) continue;
-      const double spin = motions[b].w_B_I.y();
+      if (!m.bodies[b].wheelset()) continue;
+      const double spin = ws.motions[b].w_B_I.y();
       if (i == 0) first.push_back(spin);
       change = std::max(change, std::abs(spin - first[w++]));
     }
@@ -430,7 +431,7 @@ TEST(ExtremeConservative, EnergyConservedOverSixtySeconds) {
   const double V = s.spec.speed_m_per_s;
   const Eigen::Vector3d observer(V, 0.0, 0.0);  // the track runs along W's x
   auto energy = [&](double t, const Eigen::VectorXd& x) {
-    return mechanical_energy(m, t, x, observer).total();  // includes the Hertz potential
+    return mechanical_energy(m, m.scene_speed_m_per_s, t, x, observer).total();  // includes the Hertz potential
   };
 
   // Linear check: |Re lambda| at round-off of ||A|| for every mode.
@@ -468,11 +469,11 @@ TEST(ExtremeConservative, EnergyConservedOverSixtySeconds) {
   const double perturbation = e0 - e_eq;
   ASSERT_GT(perturbation, 1.0) << "the scene's initial offset must store energy (J)";
   double drift = 0.0, exchange = 0.0;
-  const EnergyParts parts0 = mechanical_energy(m, 0.0, traj.states.front(), observer);
+  const EnergyParts parts0 = mechanical_energy(m, m.scene_speed_m_per_s, 0.0, traj.states.front(), observer);
   for (size_t i = 0; i < traj.states.size(); ++i) {
     const double e = energy(traj.times_s[i], traj.states[i]);
     drift = std::max(drift, std::abs(e - e0));
-    const EnergyParts parts = mechanical_energy(m, traj.times_s[i], traj.states[i], observer);
+    const EnergyParts parts = mechanical_energy(m, m.scene_speed_m_per_s, traj.times_s[i], traj.states[i], observer);
     exchange = std::max(exchange, std::abs(parts.elastic_J - parts0.elastic_J));
   }
   const double spin_change = max_spin_change(m, traj);
@@ -528,7 +529,7 @@ TEST(ExtremeNearCritical, SlowGrowthMatchesTheEigenvalue) {
   const auto start = std::chrono::steady_clock::now();
   const PreparedScene s = prepare_scene(case_path("extreme_near_critical"), {});
   const double V = s.spec.speed_m_per_s;
-  SpeedStability stability(s.model, s.equilibrium.state);
+  SpeedStability stability(s.model, s.equilibrium.state, s.speed_m_per_s);
   // The scene is just above the critical speed: stable at 36.90, not at V.
   const StabilityPoint below = stability.at(36.90);
   const StabilityPoint at = stability.at(V);

@@ -1,6 +1,6 @@
 // The IMEX split adds up to the model, and puts the stiffness on the
 // implicit side; work limits end a run with IntegrationGaveUp.
-#include "cli/scene_setup.hpp"
+#include "setup/prepare_scene.hpp"
 #include "integrate/integration_scenes.hpp"
 #include "integrate/integrator.hpp"
 #include "integrate/model_callbacks.hpp"
@@ -30,8 +30,8 @@ TEST(ImexSplit, PartsAddUpAndTheStiffnessIsImplicit) {
       prepare_scene(std::string(RAILSTAB_CASES_DIR) + "/thesis_bogie_tangent.toml", {});
   const Model& model = scene.model;
   const Eigen::VectorXd x = perturbed_initial_state(scene);
-  const RootFunctionSet roots(model);
-  ModelCallbackData data(model, roots, 0.0);
+  const RootFunctionSet roots(model, scene.speed_m_per_s);
+  ModelCallbackData data(model, scene.speed_m_per_s, roots, 0.0);
   prepare_imex_split(data);
 
   SUNContext ctx = nullptr;
@@ -42,7 +42,7 @@ TEST(ImexSplit, PartsAddUpAndTheStiffnessIsImplicit) {
   const double t = 0.37;
   ASSERT_EQ(implicit_rhs_callback(t, y, fi, &data), 0);
   ASSERT_EQ(explicit_rhs_callback(t, y, fe, &data), 0);
-  const Eigen::VectorXd f = rhs(model, t, x);
+  const Eigen::VectorXd f = rhs(model, model.scene_speed_m_per_s, t, x);
   const Eigen::VectorXd sum = as_eigen(fi) + as_eigen(fe);
   EXPECT_LT((sum - f).cwiseAbs().maxCoeff(), 1e-12 * f.cwiseAbs().maxCoeff());
   const int nq = model.n_coordinates;
@@ -54,8 +54,9 @@ TEST(ImexSplit, PartsAddUpAndTheStiffnessIsImplicit) {
   // The explicit part alone has no dq/dt = u (its Jacobian's eigenvalues are
   // only its damping's); what the explicit stages must resolve are the
   // oscillations of the suspension, i.e. kinematics + f_E.
-  const Eigen::MatrixXd J = rhs_jacobian_ad(model, t, x);
-  const Eigen::MatrixXd J_implicit = rhs_jacobian_ad(*data.implicit_part, t, x);
+  const Eigen::MatrixXd J = rhs_jacobian_ad(model, model.scene_speed_m_per_s, t, x);
+  const Eigen::MatrixXd J_implicit = rhs_jacobian_ad(model, scene.speed_m_per_s, t, x,
+                                                       ForceSelection::contact_and_inertia);
   Eigen::MatrixXd J_suspension = J - J_implicit;
   J_suspension.topRightCorner(nq, nq) += Eigen::MatrixXd::Identity(nq, nq);
   const double full = spectral_radius(J), suspension = spectral_radius(J_suspension);
@@ -78,7 +79,7 @@ TEST(WorkLimits, BudgetAndMaxStepsThrowGaveUp) {
   o.absolute_tolerance = 1e-13;
   o.cpu_time_budget_s = 0.05;
   try {
-    integrate(model, model.initial_state(), o);
+    integrate(model, model.scene_speed_m_per_s, initial_state(model, model.scene_speed_m_per_s), o);
     FAIL() << "expected IntegrationGaveUp";
   } catch (const IntegrationGaveUp& e) {
     EXPECT_NE(std::string(e.what()).find("CPU time budget"), std::string::npos) << e.what();
@@ -90,7 +91,7 @@ TEST(WorkLimits, BudgetAndMaxStepsThrowGaveUp) {
   o.max_steps = 100;
   for (IntegratorKind k : all_integrator_kinds()) {
     o.kind = k;
-    EXPECT_THROW(integrate(model, model.initial_state(), o), IntegrationGaveUp)
+    EXPECT_THROW(integrate(model, model.scene_speed_m_per_s, initial_state(model, model.scene_speed_m_per_s), o), IntegrationGaveUp)
         << integrator_name(k);
   }
 }

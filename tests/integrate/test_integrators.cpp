@@ -1,6 +1,8 @@
 // Every integrator reproduces the closed-form free response of a damped and
 // an undamped single-degree-of-freedom oscillator built from the model's own
 // bodies and springs, to an accuracy consistent with its tolerance.
+#include "equilibrium/equilibrium.hpp"
+#include "setup/build_model.hpp"
 #include "integrate/integrator.hpp"
 #include "integrate/integration_scenes.hpp"
 #include "integrate/work_precision.hpp"
@@ -50,7 +52,7 @@ TEST_P(ClosedForm, LateralOscillatorMatchesExactSolution) {
   opt.output_interval_s = 0.01;
   opt.relative_tolerance = 1e-8;
   opt.absolute_tolerance = 1e-11;
-  const Trajectory traj = integrate(model, model.initial_state(), opt);
+  const Trajectory traj = integrate(model, model.scene_speed_m_per_s, initial_state(model, model.scene_speed_m_per_s), opt);
   ASSERT_EQ(traj.times_s.size(), 201u);
   EXPECT_NEAR(traj.times_s.back(), 2.0, 1e-12);
   EXPECT_TRUE(traj.events.empty());
@@ -79,7 +81,7 @@ TEST_P(ClosedForm, ErrorFollowsTolerance) {
     opt.output_interval_s = 0.01;
     opt.relative_tolerance = rtol;
     opt.absolute_tolerance = rtol * 1e-3;
-    const Trajectory traj = integrate(model, model.initial_state(), opt);
+    const Trajectory traj = integrate(model, model.scene_speed_m_per_s, initial_state(model, model.scene_speed_m_per_s), opt);
     double worst = 0.0;
     for (size_t i = 0; i < traj.times_s.size(); ++i)
       worst = std::max(worst, std::abs(traj.states[i](0) - osc.exact(traj.times_s[i])));

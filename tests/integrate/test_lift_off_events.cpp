@@ -2,6 +2,8 @@
 // records them at the time the penetration crosses zero, goes on through
 // them, and stops at the first one only on request.
 #include "equilibrium/equilibrium.hpp"
+#include "setup/build_model.hpp"
+#include "equilibrium/equilibrium.hpp"
 #include "integrate/integration_scenes.hpp"
 #include "integrate/integrator.hpp"
 #include "model/equations_of_motion.hpp"
@@ -23,7 +25,7 @@ struct ThrownWheelset {
   Model model;
   Eigen::VectorXd x0;
   ThrownWheelset() : model(build_model(test::lone_knife_edge_wheelset())) {
-    x0 = solve_equilibrium(model, lowered_nominal_state(model)).state;
+    x0 = solve_equilibrium(model, model.scene_speed_m_per_s, lowered_nominal_state(model, model.scene_speed_m_per_s)).state;
     const int n = model.n_coordinates;
     x0(n + model.bodies[0].state_index[int(CoordinateIndex::z)]) += 0.05;
     x0(n + model.bodies[0].state_index[int(CoordinateIndex::roll)]) += 0.1;
@@ -45,12 +47,12 @@ std::vector<Crossing> fine_crossings(const Model& model, const Eigen::VectorXd& 
   o.output_interval_s = 1e-6;
   o.relative_tolerance = 1e-11;
   o.absolute_tolerance = 1e-14;
-  const Trajectory traj = integrate(model, x0, o);
+  const Trajectory traj = integrate(model, model.scene_speed_m_per_s, x0, o);
   std::vector<Crossing> out;
   std::vector<double> previous;
   for (size_t i = 0; i < traj.times_s.size(); ++i) {
     EvaluationDetails d;
-    rhs(model, traj.times_s[i], traj.states[i], &d);
+    rhs(model, model.scene_speed_m_per_s, traj.times_s[i], traj.states[i], &d);
     if (previous.empty()) previous.assign(d.contacts.size(), 0.0);
     for (size_t w = 0; w < d.contacts.size(); ++w) {
       const double p = d.contacts[w].wheel.penetration_m;
@@ -88,7 +90,7 @@ TEST_P(LiftOff, EventsAtThePenetrationZeroCrossings) {
   o.output_interval_s = 0.01;
   o.relative_tolerance = 1e-8;
   o.absolute_tolerance = 1e-11;
-  const Trajectory traj = integrate(w.model, w.x0, o);
+  const Trajectory traj = integrate(w.model, w.model.scene_speed_m_per_s, w.x0, o);
   EXPECT_TRUE(traj.stopped_early.empty()) << traj.stopped_early;
   EXPECT_NEAR(traj.times_s.back(), t_end, 1e-12);  // lift-off does not end the run
   EXPECT_EQ(traj.times_s.size(), 4u);  // events add no output points
@@ -126,7 +128,7 @@ TEST(LiftOff, StopOnLiftOffEndsTheRunWithTheMessage) {
   o.relative_tolerance = 1e-8;
   o.absolute_tolerance = 1e-11;
   o.stop_on_lift_off = true;
-  const Trajectory traj = integrate(w.model, w.x0, o);
+  const Trajectory traj = integrate(w.model, w.model.scene_speed_m_per_s, w.x0, o);
   EXPECT_TRUE(std::regex_match(traj.stopped_early,
                                std::regex(R"(wheelset left wheel lost contact at t = [0-9.e+-]+ s)")))
       << traj.stopped_early;
@@ -137,7 +139,7 @@ TEST(LiftOff, StopOnLiftOffEndsTheRunWithTheMessage) {
   EXPECT_DOUBLE_EQ(traj.times_s.back(), traj.events.front().time_s);
   EXPECT_NEAR(traj.times_s.back(), 1.566e-4, 1e-7);
   EvaluationDetails d;
-  rhs(w.model, traj.times_s.back(), traj.states.back(), &d);
+  rhs(w.model, w.model.scene_speed_m_per_s, traj.times_s.back(), traj.states.back(), &d);
   EXPECT_NEAR(d.contacts[0].wheel.penetration_m, 0.0, 1e-12);
 }
 
@@ -153,9 +155,10 @@ TEST(LiftOff, WheelsOutOfContactAtTheStartAreReported) {
   w.x0(kz) += 0.001;
   w.x0.tail(n).setZero();
   w.x0(n + w.model.bodies[0].state_index[int(CoordinateIndex::pitch)]) =
-      w.model.bodies[0].initial_rate(int(CoordinateIndex::pitch));  // rolling at V
+      w.model.bodies[0].prescribed_rate(int(CoordinateIndex::pitch),
+                                        w.model.scene_speed_m_per_s);  // rolling at V
   EvaluationDetails d;
-  rhs(w.model, 0.0, w.x0, &d);
+  rhs(w.model, w.model.scene_speed_m_per_s, 0.0, w.x0, &d);
   const double fall_m = -d.contacts[0].wheel.penetration_m / std::cos(0.1);
   ASSERT_GT(fall_m, 9e-4);
   const double touch_down_s = std::sqrt(2.0 * fall_m / 9.81);
@@ -164,7 +167,7 @@ TEST(LiftOff, WheelsOutOfContactAtTheStartAreReported) {
   o.t_end_s = 0.05;
   o.relative_tolerance = 1e-10;
   o.absolute_tolerance = 1e-13;
-  const Trajectory free_fall = integrate(w.model, w.x0, o);
+  const Trajectory free_fall = integrate(w.model, w.model.scene_speed_m_per_s, w.x0, o);
   ASSERT_GE(free_fall.events.size(), 4u);
   EXPECT_EQ(free_fall.events[0].kind, ContactEvent::Kind::out_of_contact_at_start);
   EXPECT_EQ(free_fall.events[1].kind, ContactEvent::Kind::out_of_contact_at_start);
@@ -178,7 +181,7 @@ TEST(LiftOff, WheelsOutOfContactAtTheStartAreReported) {
   }
 
   o.stop_on_lift_off = true;
-  const Trajectory stopped = integrate(w.model, w.x0, o);
+  const Trajectory stopped = integrate(w.model, w.model.scene_speed_m_per_s, w.x0, o);
   EXPECT_EQ(stopped.stopped_early,
             "wheelset left wheel lost contact at t = 0 s (out of contact in the initial state)");
   EXPECT_EQ(stopped.times_s.size(), 1u);

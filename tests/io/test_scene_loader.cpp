@@ -135,8 +135,14 @@ void expect_scene_error(const std::string& text, std::initializer_list<std::stri
 
 const ElementSpec& element_named(const SceneSpec& scene, const std::string& name) {
   for (const ElementSpec& element : scene.elements)
-    if (element.name == name) return element;
+    if (ends_of(element).name == name) return element;
   throw std::logic_error("no element " + name);
+}
+template <class Element>
+const Element& element_named(const SceneSpec& scene, const std::string& name) {
+  const Element* e = std::get_if<Element>(&element_named(scene, name));
+  if (!e) throw std::logic_error(name + " is not a " + Element::kType);
+  return *e;
 }
 
 }  // namespace
@@ -188,23 +194,24 @@ TEST(SceneLoader, MinimalSceneParsesToExpectedValues) {
   EXPECT_EQ(bogie.free, (std::array<bool, 6>{false, true, false, false, false, true}));
 
   ASSERT_EQ(scene.elements.size(), 4u);  // mirrored pair + anchor + yaw damper
-  const ElementSpec& left = element_named(scene, "primary_ws1_left");
-  const ElementSpec& right = element_named(scene, "primary_ws1_right");
-  EXPECT_EQ(left.point1_m, Eigen::Vector3d(0.0, 1.0, 0.0));
-  EXPECT_EQ(left.point2_m, Eigen::Vector3d(1.5, 1.0, -0.6075));
-  EXPECT_EQ(right.point1_m, Eigen::Vector3d(0.0, -1.0, 0.0));
-  EXPECT_EQ(right.point2_m, Eigen::Vector3d(1.5, -1.0, -0.6075));
-  EXPECT_EQ(right.stiffness, Eigen::Vector3d(3.9e7, 7.85e6, 9.75e5));
-  EXPECT_EQ(right.damping, Eigen::Vector3d(0.0, 0.0, 1.08e4));
-  EXPECT_EQ(right.body1, "wheelset1");
-  EXPECT_EQ(right.body2, "bogie1");
-  const ElementSpec& anchor = element_named(scene, "anchor");
-  EXPECT_EQ(anchor.body1, kTrackBodyName);
-  EXPECT_EQ(anchor.actuator, Eigen::Vector3d(0.0, 5.0, 0.0));
-  const ElementSpec& yaw_damper = element_named(scene, "yaw_damper");
-  EXPECT_EQ(yaw_damper.kind, ElementKind::rotational_spring_damper);
-  EXPECT_EQ(yaw_damper.point1_m, Eigen::Vector3d::Zero());  // default for rotational
-  EXPECT_EQ(yaw_damper.damping, Eigen::Vector3d(0.0, 0.0, 2.0e4));
+  using Spring = SpringDamper3d<double>;
+  const Spring& left = element_named<Spring>(scene, "primary_ws1_left");
+  const Spring& right = element_named<Spring>(scene, "primary_ws1_right");
+  EXPECT_EQ(left.ends.point1_m, Eigen::Vector3d(0.0, 1.0, 0.0));
+  EXPECT_EQ(left.ends.point2_m, Eigen::Vector3d(1.5, 1.0, -0.6075));
+  EXPECT_EQ(right.ends.point1_m, Eigen::Vector3d(0.0, -1.0, 0.0));
+  EXPECT_EQ(right.ends.point2_m, Eigen::Vector3d(1.5, -1.0, -0.6075));
+  EXPECT_EQ(right.stiffness_N_per_m, Eigen::Vector3d(3.9e7, 7.85e6, 9.75e5));
+  EXPECT_EQ(right.damping_N_s_per_m, Eigen::Vector3d(0.0, 0.0, 1.08e4));
+  EXPECT_EQ(right.ends.body1_name, "wheelset1");
+  EXPECT_EQ(right.ends.body2_name, "bogie1");
+  const Spring& anchor = element_named<Spring>(scene, "anchor");
+  EXPECT_EQ(anchor.ends.body1_name, kTrackBodyName);
+  EXPECT_EQ(anchor.actuator_force_N, Eigen::Vector3d(0.0, 5.0, 0.0));
+  using Bushing = RotationalSpringDamper<double>;
+  const Bushing& yaw_damper = element_named<Bushing>(scene, "yaw_damper");
+  EXPECT_EQ(yaw_damper.ends.point1_m, Eigen::Vector3d::Zero());  // default for rotational
+  EXPECT_EQ(yaw_damper.damping_N_m_s_per_rad, Eigen::Vector3d(0.0, 0.0, 2.0e4));
 
   EXPECT_DOUBLE_EQ(scene.simulation.t_end_s, 5.0);
   EXPECT_DOUBLE_EQ(scene.simulation.output_interval_s, 0.01);  // default
@@ -501,6 +508,6 @@ TEST(SceneLoader, ThesisVehicleCaseHasMirroredSuspension) {
       load_scene_file(std::string(RAILSTAB_CASES_DIR) + "/thesis_vehicle_curve.toml");
   EXPECT_EQ(scene.elements.size(), 12u);  // 8 primary + 4 secondary springs (Tables 5.3, 5.5)
   const ElementSpec& secondary = element_named(scene, "secondary_bogie2_right");
-  EXPECT_EQ(secondary.point2_m, Eigen::Vector3d(-9.675, -1.0, -0.73));
+  EXPECT_EQ(ends_of(secondary).point2_m, Eigen::Vector3d(-9.675, -1.0, -0.73));
   EXPECT_FALSE(scene.bodies[6].free[int(CoordinateIndex::x)]);  // car body holds the speed
 }

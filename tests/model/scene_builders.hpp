@@ -36,14 +36,14 @@ inline BodySpec rigid_body(const std::string& name, double offset_m, double heig
 inline ElementSpec spring(const std::string& name, const std::string& b1, const std::string& b2,
                           Eigen::Vector3d p1, Eigen::Vector3d p2, Eigen::Vector3d k,
                           Eigen::Vector3d c = Eigen::Vector3d::Zero()) {
-  ElementSpec e;
-  e.name = name;
-  e.body1 = b1;
-  e.body2 = b2;
-  e.point1_m = p1;
-  e.point2_m = p2;
-  e.stiffness = k;
-  e.damping = c;
+  SpringDamper3d<double> e;
+  e.ends.name = name;
+  e.ends.body1_name = b1;
+  e.ends.body2_name = b2;
+  e.ends.point1_m = p1;
+  e.ends.point2_m = p2;
+  e.stiffness_N_per_m = k;
+  e.damping_N_s_per_m = c;
   return e;
 }
 

@@ -388,20 +388,23 @@ inline double longitudinal_position(const BodySpec& b) {
 
 // Adds one spring between a body ("inner": wheelset, point on its axle) and
 // an outer attachment at longitudinal arm `a` from the outer CM.
-inline void add_link(Restraint& r, const ElementSpec& e, const Eigen::Vector3d& inner_point,
+inline void add_link(Restraint& r, const ElementSpec& element, const Eigen::Vector3d& inner_point,
                      const Eigen::Vector3d& outer_point, double a) {
-  require(e.kind == ElementKind::spring_damper_3d, e.name + " is not a spring_damper_3d");
+  const std::string& name = ends_of(element).name;
+  const auto* spring = std::get_if<SpringDamper3d<double>>(&element);
+  require(spring != nullptr, name + " is not a spring_damper_3d");
+  const SpringDamper3d<double>& e = *spring;
   // z is frozen and the points may differ in height only: kz, cz and a
   // vertical free length do not enter the lateral/yaw equations.
-  require(inner_point.x() == 0.0, e.name + ": point on the wheelset must lie on the axle (x = 0)");
-  require(outer_point.x() == a, e.name + ": points must coincide longitudinally");
-  require(outer_point.y() == inner_point.y(), e.name + ": points must coincide laterally");
-  require(e.actuator.isZero(), e.name + ": no actuator force");
+  require(inner_point.x() == 0.0, name + ": point on the wheelset must lie on the axle (x = 0)");
+  require(outer_point.x() == a, name + ": points must coincide longitudinally");
+  require(outer_point.y() == inner_point.y(), name + ": points must coincide laterally");
+  require(e.actuator_force_N.isZero(), name + ": no actuator force");
   const double b = inner_point.y();
-  r.ky_N_per_m += e.stiffness.y();
-  r.kpsi_N_m_per_rad += e.stiffness.x() * b * b;
-  r.cy_N_s_per_m += e.damping.y();
-  r.cpsi_N_m_s_per_rad += e.damping.x() * b * b;
+  r.ky_N_per_m += e.stiffness_N_per_m.y();
+  r.kpsi_N_m_per_rad += e.stiffness_N_per_m.x() * b * b;
+  r.cy_N_s_per_m += e.damping_N_s_per_m.y();
+  r.cpsi_N_m_s_per_rad += e.damping_N_s_per_m.x() * b * b;
 }
 
 }  // namespace detail
@@ -412,11 +415,12 @@ inline RestrainedWheelset restrained_wheelset_from_scene(const SceneSpec& s) {
   detail::require(s.bodies.size() == 1, "one body");
   RestrainedWheelset p;
   p.ws = detail::creep_wheelset(s, s.bodies[0]);
-  for (const ElementSpec& e : s.elements) {
-    detail::require(e.body1 == kTrackBodyName || e.body2 == kTrackBodyName,
+  for (const ElementSpec& element : s.elements) {
+    const ElementEnds& e = ends_of(element);
+    detail::require(e.body1_name == kTrackBodyName || e.body2_name == kTrackBodyName,
                     e.name + " must connect the wheelset to the track");
-    const bool ws_is_2 = e.body1 == kTrackBodyName;
-    detail::add_link(p.to_track, e, ws_is_2 ? e.point2_m : e.point1_m,
+    const bool ws_is_2 = e.body1_name == kTrackBodyName;
+    detail::add_link(p.to_track, element, ws_is_2 ? e.point2_m : e.point1_m,
                      ws_is_2 ? e.point1_m : e.point2_m, s.bodies[0].position_m.x());
   }
   return p;
@@ -445,19 +449,20 @@ inline Bogie bogie_from_scene(const SceneSpec& s) {
     p.ws[i] = detail::creep_wheelset(s, *wheelsets[i]);
     p.a_m[i] = detail::longitudinal_position(*wheelsets[i]) - detail::longitudinal_position(*frame);
   }
-  for (const ElementSpec& e : s.elements) {
+  for (const ElementSpec& element : s.elements) {
+    const ElementEnds& e = ends_of(element);
     int i = -1;
     bool ws_is_1 = true;
     for (int k = 0; k < 2; ++k) {
-      if (e.body1 == p.ws[k].body && e.body2 == frame->name) i = k, ws_is_1 = true;
-      if (e.body2 == p.ws[k].body && e.body1 == frame->name) i = k, ws_is_1 = false;
+      if (e.body1_name == p.ws[k].body && e.body2_name == frame->name) i = k, ws_is_1 = true;
+      if (e.body2_name == p.ws[k].body && e.body1_name == frame->name) i = k, ws_is_1 = false;
     }
     detail::require(i >= 0, e.name + " must connect a wheelset to the frame");
     const Eigen::Vector3d ws_point = ws_is_1 ? e.point1_m : e.point2_m;
     const Eigen::Vector3d frame_point = ws_is_1 ? e.point2_m : e.point1_m;
     detail::require(wheelsets[i]->position_m.x() == 0.0 && frame->position_m.x() == 0.0,
                     "CMs at their track frames' origins (x = 0)");
-    detail::add_link(p.primary[i], e, ws_point, frame_point, p.a_m[i]);
+    detail::add_link(p.primary[i], element, ws_point, frame_point, p.a_m[i]);
   }
   return p;
 }

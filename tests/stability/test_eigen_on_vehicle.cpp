@@ -1,6 +1,6 @@
 // Dense and ARPACK eigen-solvers agree on the thesis vehicle; the critical
 // speeds of the thesis scenes are consistent with the time domain.
-#include "cli/scene_setup.hpp"
+#include "setup/prepare_scene.hpp"
 #include "stability/speed_analysis.hpp"
 
 #include <gtest/gtest.h>
@@ -21,8 +21,8 @@ TEST(EigenOnVehicle, ArpackAgreesWithDense) {
   StabilityOptions dense_opt, arpack_opt;
   arpack_opt.solver = EigenSolverKind::arpack;
   arpack_opt.arpack_shift = {0.0, 2.0 * M_PI * 4.0};
-  const StabilityPoint dense = SpeedStability(s.model, s.equilibrium.state, dense_opt).at(100.0);
-  const StabilityPoint arpack = SpeedStability(s.model, s.equilibrium.state, arpack_opt).at(100.0);
+  const StabilityPoint dense = SpeedStability(s.model, s.equilibrium.state, s.speed_m_per_s, dense_opt).at(100.0);
+  const StabilityPoint arpack = SpeedStability(s.model, s.equilibrium.state, s.speed_m_per_s, arpack_opt).at(100.0);
   ASSERT_GE(arpack.modes.size(), 10u);
   for (const ModeReport& a : arpack.modes) {
     double best = 1e300;
@@ -46,7 +46,7 @@ TEST(EigenOnVehicle, ThesisBogieCriticalSpeedBetweenTimeDomainRuns) {
   opt.from_m_per_s = 5.0;
   opt.to_m_per_s = 60.0;
   opt.grid_step_m_per_s = 5.0;
-  const CriticalSpeedResult r = find_critical_speed(s.model, s.equilibrium.state, opt);
+  const CriticalSpeedResult r = find_critical_speed(s.model, s.equilibrium.state, s.speed_m_per_s, opt);
   ASSERT_TRUE(r.critical_speed_found);
   EXPECT_GT(r.critical_speed_m_per_s, 20.0);
   EXPECT_LT(r.critical_speed_m_per_s, 40.0);
@@ -70,7 +70,7 @@ TEST(EigenOnVehicle, AutomaticSolverChoice) {
   EXPECT_EQ(resolved_solver(EigenSolverKind::arpack, 10), EigenSolverKind::arpack);
   const PreparedScene s =
       prepare_scene(std::string(RAILSTAB_CASES_DIR) + "/thesis_vehicle_tangent.toml", {});
-  SpeedStability stability(s.model, s.equilibrium.state, StabilityOptions{});
+  SpeedStability stability(s.model, s.equilibrium.state, s.speed_m_per_s, StabilityOptions{});
   const StabilityPoint p = stability.at(60.0);
   EXPECT_EQ(p.solver_used, EigenSolverKind::dense);
   EXPECT_EQ(p.modes.size(), size_t(p.linear.A.rows()));  // all modes

@@ -1,6 +1,6 @@
 // Equilibria (steady rolling, steady curving) and the kinematic limit of the
 // linearised knife-edge wheelset.
-#include "cli/scene_setup.hpp"
+#include "setup/prepare_scene.hpp"
 #include "equilibrium/equilibrium.hpp"
 #include "model/equations_of_motion.hpp"
 #include "model/scene_builders.hpp"
@@ -30,7 +30,7 @@ TEST(Equilibrium, SymmetricVehicleOnTangent) {
                                         {30.0, std::nullopt, std::nullopt});
   const Model& m = s.model;
   Eigen::MatrixXd q6, qd6;
-  m.full_coordinates(0.0, s.equilibrium.state, q6, qd6);
+  m.full_coordinates(0.0, s.speed_m_per_s, s.equilibrium.state, q6, qd6);
   double weight = 0.0;
   for (size_t b = 0; b < m.bodies.size(); ++b) {
     weight += m.bodies[b].mass_kg * m.gravity_m_per_s2;
@@ -38,7 +38,7 @@ TEST(Equilibrium, SymmetricVehicleOnTangent) {
     EXPECT_NEAR(q6(5, b), 0.0, 1e-12) << m.bodies[b].name;  // yaw, rad
   }
   EvaluationDetails d;
-  rhs(m, 0.0, s.equilibrium.state, &d);
+  rhs(m, m.scene_speed_m_per_s, 0.0, s.equilibrium.state, &d);
   double vertical = 0.0;
   for (size_t i = 0; i + 1 < d.contacts.size(); i += 2) {
     const auto& left = d.contacts[i].wheel;
@@ -69,7 +69,7 @@ double knife_edge_effective_conicity() {
 TEST(Equilibrium, FreeWheelsetInArcNearPureRollingShift) {
   const double R = 1000.0;
   const Model m = build_model(test::lone_knife_edge_wheelset(5.0, arc_track(R)));
-  const EquilibriumResult eq = solve_equilibrium(m, lowered_nominal_state(m));
+  const EquilibriumResult eq = solve_equilibrium(m, m.scene_speed_m_per_s, lowered_nominal_state(m, m.scene_speed_m_per_s));
   const double y0 = 0.45 * 0.75 / (knife_edge_effective_conicity() * R);
   const double y = eq.state(m.bodies[0].state_index[1]);
   std::printf("free wheelset in R = %.0f m arc: y = %.4f mm, pure rolling %.4f mm\n", R, y * 1e3,
@@ -83,7 +83,7 @@ TEST(Equilibrium, FreeWheelsetInArcNearPureRollingShift) {
 TEST(Equilibrium, NoEquilibriumGivesClearError) {
   const Model m = build_model(test::lone_knife_edge_wheelset(150.0, arc_track(150.0)));
   try {
-    solve_equilibrium(m, lowered_nominal_state(m));
+    solve_equilibrium(m, m.scene_speed_m_per_s, lowered_nominal_state(m, m.scene_speed_m_per_s));
     FAIL() << "expected no equilibrium";
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("no equilibrium"), std::string::npos) << e.what();
@@ -104,8 +104,8 @@ TEST(Hunting, KnifeEdgeWheelsetApproachesKlingel) {
   TrackSpec straight;
   straight.segments.push_back({TrackSegmentKind::tangent, 2000.0, 0.0, 0.0});
   const Model m = build_model(test::lone_knife_edge_wheelset(2.0, straight));
-  const EquilibriumResult eq = solve_equilibrium(m, lowered_nominal_state(m));
-  SpeedStability stability(m, eq.state);
+  const EquilibriumResult eq = solve_equilibrium(m, m.scene_speed_m_per_s, lowered_nominal_state(m, m.scene_speed_m_per_s));
+  SpeedStability stability(m, eq.state, m.scene_speed_m_per_s);
   const StabilityPoint p = stability.at(2.0);
   // the kinematic mode: the oscillatory mode below 1 Hz
   double f = 0.0;

@@ -1,9 +1,11 @@
 #pragma once
-// Shared first steps of every command: read the scene, apply command-line
-// overrides, build the model, solve preloads and the static/steady equilibrium.
+// The first steps of every analysis: read the scene, apply overrides, build
+// the model (preloads solved in), solve the static/steady equilibrium at the
+// run's speed.
 #include "equilibrium/equilibrium.hpp"
 #include "model/model.hpp"
 #include "scene/scene_spec.hpp"
+#include "setup/build_model.hpp"
 
 #include <optional>
 #include <string>
@@ -21,10 +23,13 @@ struct SceneOverrides {
 struct PreparedScene {
   SceneSpec spec;
   Model model;
-  EquilibriumResult equilibrium;  // at t = 0 (steady rolling / curving at the scene speed)
+  double speed_m_per_s = 0.0;     // of this run: the override, or the scene's
+  EquilibriumResult equilibrium;  // at t = 0 (steady rolling / curving at that speed)
 };
 
 PreparedScene prepare_scene(const std::string& path, const SceneOverrides& overrides);
+// The same from a scene already read (overrides applied by the caller).
+PreparedScene prepare_scene(SceneSpec spec);
 
 // Equilibrium state plus the scene's initial offsets and rates.
 Eigen::VectorXd perturbed_initial_state(const PreparedScene& scene);

@@ -28,9 +28,10 @@
 //  column is zero (the axle boxes do not spin: their moments do no work on it).
 //  For an axisymmetric wheelset nothing depends on the spin angle (pitch),
 //  so linearisation sees an exactly zero Jacobian column (ERRATA 11a).
+#include "bodies/body.hpp"
+#include "core/coordinates.hpp"
 #include "core/scalar.hpp"
 #include "frames/rotations.hpp"
-#include "model/model.hpp"
 #include "track/track.hpp"
 
 namespace railstab {
@@ -55,8 +56,8 @@ template <class T> struct BodyMotion {
   Vec3<T> force_W, moment_W, spinning_moment_W;
 };
 
-template <class T>
-void compute_body_motion(const ModelBody& body, const TrackFrameKinematics& track,
+template <class T, class S>
+void compute_body_motion(const BodyTpl<S>& body, const TrackFrameKinematics& track,
                          const Eigen::Matrix<T, 6, 1>& q, const Eigen::Matrix<T, 6, 1>& qd,
                          BodyMotion<T>& m) {
   using std::cos;
@@ -79,12 +80,12 @@ void compute_body_motion(const ModelBody& body, const TrackFrameKinematics& trac
   m.w_TI_I = Vec3<T>(qd(3), s * qd(5), c * qd(5));
   m.w_I_I = m.R_TI.transpose() * w_T + m.w_TI_I;
   m.w_B_I = m.w_I_I + Vec3<T>(T(0), qd(4), T(0));
-  if (body.is_wheelset) {
-    m.R_WF = m.R_WI;
-    m.w_F_W = m.R_WI * m.w_I_I;
-  } else {
+  if (attached_in_spinning_frame(body.kind)) {
     m.R_WF = m.R_WI * m.R_IB;
     m.w_F_W = m.R_WI * m.w_B_I;
+  } else {
+    m.R_WF = m.R_WI;
+    m.w_F_W = m.R_WI * m.w_I_I;
   }
   m.force_W.setZero();
   m.moment_W.setZero();
@@ -129,8 +130,8 @@ template <class T> Vec3<T> solve_small_spd(const Mat3<T>& M, const Vec3<T>& b, i
 
 // Accelerations of the six coordinates (entries of frozen coordinates are
 // left at zero: their motion is prescribed).
-template <class T>
-Eigen::Matrix<T, 6, 1> body_accelerations(const ModelBody& body, const BodyMotion<T>& m) {
+template <class T, class S>
+Eigen::Matrix<T, 6, 1> body_accelerations(const BodyTpl<S>& body, const BodyMotion<T>& m) {
   using std::cos;
   using std::sin;
   const TrackFrameKinematics& k = *m.track;
@@ -143,7 +144,7 @@ Eigen::Matrix<T, 6, 1> body_accelerations(const ModelBody& body, const BodyMotio
 
   // Translation, in T.
   const Vec3<T> force_T = m.R_WT.transpose() * m.force_W;
-  const Vec3<T> wdd = force_T / T(body.mass_kg) - a_T - T(2) * w_T.cross(wd) -
+  const Vec3<T> wdd = force_T / lift<T>(body.mass_kg) - a_T - T(2) * w_T.cross(wd) -
                       w_T.cross(w_T.cross(w)) - alpha_T.cross(w);
   for (int i = 0; i < 3; ++i)
     if (body.state_index[i] >= 0) acc(i) = wdd(i);
@@ -158,12 +159,13 @@ Eigen::Matrix<T, 6, 1> body_accelerations(const ModelBody& body, const BodyMotio
   const T roll = m.q(3), pitch = m.q(4);
   const T s = sin(roll), c = cos(roll);
   Mat3<T> J_I;
-  const Mat3<T> J_B = to_scalar<T>(body.inertia_kg_m2).asDiagonal();
-  if (body.is_wheelset) {
-    J_I = J_B;  // axisymmetric (validated Jx = Jz): independent of the spin angle
-  } else {
+  const Mat3<T> J_B = lift<T>(body.inertia_kg_m2).asDiagonal();
+  const bool spinning_attachment = attached_in_spinning_frame(body.kind);
+  if (spinning_attachment) {
     const Mat3<T> R_IB = rot_y(pitch);
     J_I = R_IB * J_B * R_IB.transpose();
+  } else {
+    J_I = J_B;  // wheelset: axisymmetric (validated Jx = Jz), independent of the spin angle
   }
   const Vec3<T> frame_moment_I = m.R_WI.transpose() * m.moment_W;
   const Vec3<T> spinning_moment_I = m.R_WI.transpose() * m.spinning_moment_W;
@@ -187,7 +189,7 @@ Eigen::Matrix<T, 6, 1> body_accelerations(const ModelBody& body, const BodyMotio
   // The frame moment works through the frame's own rotation: for a wheelset
   // the spin column is absent from it.
   Mat3<T> G_frame = G_free;
-  if (body.is_wheelset)
+  if (!spinning_attachment)
     for (int j = 0; j < n_free_rot; ++j)
       if (free_rot[j] == int(CoordinateIndex::pitch)) G_frame.col(j).setZero();
   const Vec3<T> gen_force = G_free.transpose() * rhs_I + G_frame.transpose() * frame_moment_I;

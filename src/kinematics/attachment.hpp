@@ -1,7 +1,7 @@
 #pragma once
 // Where a force element is attached: a body's attachment frame or a track
 // frame (which moves along the track at V and takes no reaction).
-#include "model/body_motion.hpp"
+#include "kinematics/body_motion.hpp"
 
 namespace railstab {
 

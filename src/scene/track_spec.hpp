@@ -1,0 +1,32 @@
+#pragma once
+// The track as a scene describes it (conventions: scene/scene_spec.hpp).
+#include <vector>
+
+namespace railstab {
+
+// --- Track --------------------------------------------------------------------
+enum class TrackSegmentKind { tangent, clothoid, arc };
+
+// A segment starts where the previous one ends (position, heading, curvature,
+// cant), so continuity holds by construction. Curvature varies linearly over a
+// clothoid and is constant on tangent (zero) and arc (= start curvature).
+// Cant varies linearly over every segment from its start to `end_cant_m`.
+struct TrackSegmentSpec {
+  TrackSegmentKind kind = TrackSegmentKind::tangent;
+  double length_m = 0.0;
+  double end_curvature_per_m = 0.0;  // clothoid only; tangent 0, arc = start
+  double end_cant_m = 0.0;
+};
+
+struct TrackSpec {
+  double start_x_m = 0.0;
+  double start_y_m = 0.0;
+  double start_z_m = 0.0;
+  double start_heading_rad = 0.0;
+  double start_curvature_per_m = 0.0;
+  double start_cant_m = 0.0;
+  double rail_contact_distance_m = 1.5;  // D in phi = asin(cant / D) (ERRATA 2)
+  std::vector<TrackSegmentSpec> segments;
+};
+
+}  // namespace railstab

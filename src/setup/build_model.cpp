@@ -1,0 +1,45 @@
+#include "setup/build_model.hpp"
+
+#include "equilibrium/equilibrium.hpp"
+#include "model/equations_of_motion.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace railstab {
+
+SceneSpec straight_twin(const SceneSpec& spec) {
+  SceneSpec twin = spec;
+  double reach = 0.0;
+  for (const BodySpec& b : spec.bodies) reach = std::max(reach, std::abs(b.track_offset_m));
+  twin.track = TrackSpec{};
+  twin.track.rail_contact_distance_m = spec.track.rail_contact_distance_m;
+  twin.reference_arc_length_m = reach + 10.0;
+  twin.track.segments.push_back({TrackSegmentKind::tangent, 2.0 * reach + 20.0, 0.0, 0.0});
+  return twin;
+}
+
+std::vector<Eigen::Vector3d> solve_gravity_preloads(const SceneSpec& scene) {
+  const Model twin = assemble_model(straight_twin(scene));
+  const double V = scene.speed_m_per_s;
+  const EquilibriumResult sagged = solve_equilibrium(twin, V, lowered_nominal_state(twin, V));
+  Workspace<double> ws(twin);
+  compute_all_body_motions<double>(twin, ws, 0.0, V, sagged.state);
+  std::vector<Eigen::Vector3d> preloads;
+  for (const auto& element : twin.elements)
+    preloads.push_back(std::visit(
+        [&](const auto& e) {
+          const auto [a1, a2] = element_attachments(e.ends, ws);
+          return e.elastic_load(a1, a2);
+        },
+        element));
+  return preloads;
+}
+
+Model build_model(const SceneSpec& scene) {
+  if (scene.preload == PreloadMode::balance_gravity_at_nominal)
+    return assemble_model(scene, solve_gravity_preloads(scene));
+  return assemble_model(scene);
+}
+
+}  // namespace railstab
