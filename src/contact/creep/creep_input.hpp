@@ -51,6 +51,18 @@ template <class T, class S> T lift(const S& s) {
   }
 }
 
+// Parameter conversion for cast<S2>(): to double keeps the value (drops the
+// derivatives), to AdScalar a double becomes a constant.
+template <class S2, class S> S2 cast_parameter(const S& s) {
+  if constexpr (std::is_same_v<S2, S>) {
+    return s;
+  } else if constexpr (std::is_same_v<S2, double>) {
+    return value_of(s);
+  } else {
+    return constant<S2>(s);
+  }
+}
+
 namespace creep_detail {
 
 inline void require_finite(double x, const char* law, const char* field) {

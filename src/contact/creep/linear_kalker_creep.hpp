@@ -18,7 +18,7 @@ template <class S> struct LinearKalkerCreep {
   void validate() const;  // std::invalid_argument naming the field
   template <class T> CreepForces<T> forces(const CreepInput<T>& in) const;
   template <class S2> LinearKalkerCreep<S2> cast() const {
-    return LinearKalkerCreep<S2>{lift<S2>(kalker_reduction_factor)};
+    return LinearKalkerCreep<S2>{cast_parameter<S2>(kalker_reduction_factor)};
   }
 };
 

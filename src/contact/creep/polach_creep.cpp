@@ -56,7 +56,7 @@ CreepForces<T> PolachCreep<S>::forces(const CreepInput<T>& in) const {
 
   // Friction at the slip velocity w = V s_C.
   const T V = in.speed_m_per_s;
-  const T w = creep_detail::regularised_root(T(V * V * sC2), kSlipVelocityRegularisation_m_per_s);
+  const T w = creep_detail::regularised_norm(T(V * V * sC2), kSlipVelocityRegularisation_m_per_s);
   const T A = lift<T>(limit_friction_ratio);
   const T mu = lift<T>(friction_coefficient) *
                ((1.0 - A) * exp(T(-lift<T>(friction_decrease_rate_s_per_m) * w)) + A);

@@ -17,8 +17,9 @@
 //     eps = (pi / 4) |(r f11 xi_x, r f22 s_yC)| / (mu N)
 //   Resultant from xi_x, xi_y (2005, k_S <= k_A <= 1):
 //     F = (2 mu N / pi) (k_A eps / (1 + (k_A eps)^2) + atan(k_S eps))
-//   Lateral force from spin (1999):
-//     F_yS = -(9/16) a mu N K_M (1 + 6.3 (1 - exp(-a/b))) phi / s_C,
+//   Lateral force from spin (1999; Polach writes -(9/16) a Q f K_M ... psi/s_C
+//   oriented like his F, along the creepage; on the wheel it is the negative):
+//     F_yS = (9/16) a mu N K_M (1 + 6.3 (1 - exp(-a/b))) phi / s_C,
 //     K_M = |eps_M| (d^3/3 - d^2/2 + 1/6) - (1/3) sqrt((1 - d^2)^3),
 //     d = (eps_M^2 - 1) / (eps_M^2 + 1),
 //     eps_M = (8/3) G b sqrt(ab) c23 s_C / (mu N (1 + 6.3 (1 - exp(-a/b))))
@@ -54,9 +55,12 @@
 //  - The spin switch |xi_y + phi a| > |xi_y| is s_yC^2 = max(xi_y^2,
 //    (xi_y + phi a)^2), replaced by smooth_max with width
 //    kSpinSwitchWidth = 1e-16 (creepage^2): s_yC^2 is low by at most 5e-17.
-//  - w = V s_C is sqrt at zero: w = regularised_root(V^2 s_C^2, w0) with
-//    w0 = kSlipVelocityRegularisation_m_per_s = 1e-6 m/s (w low by at most
-//    1e-6 m/s: mu high by at most mu0 (1 - A) B 1e-6).
+//  - w = V s_C is sqrt at zero: w = regularised_norm(V^2 s_C^2, w0)
+//    = V^2 s_C^2 / sqrt(V^2 s_C^2 + w0^2) with w0 =
+//    kSlipVelocityRegularisation_m_per_s = 1e-6 m/s: w is low by at most
+//    w0^2 / (2 w) (5e-10 m/s at w = 1 mm/s), and below w ~ w0 the friction
+//    is mu0 to first order, where it has no effect on the forces anyway
+//    (mu enters only through eps^2 ~ 0).
 //  Hence d(forces)/d(creepages) at zero creepage is exactly the limit above.
 // Zero normal force gives zero forces (the limit N -> 0+ of all three).
 #include "contact/creep/creep_input.hpp"
@@ -81,10 +85,12 @@ template <class S> struct PolachCreep {
   // Needs semi_axis_a_m, semi_axis_b_m > 0 when normal_force_N > 0.
   template <class T> CreepForces<T> forces(const CreepInput<T>& in) const;
   template <class S2> PolachCreep<S2> cast() const {
-    return PolachCreep<S2>{lift<S2>(friction_coefficient), lift<S2>(limit_friction_ratio),
-                           lift<S2>(friction_decrease_rate_s_per_m),
-                           lift<S2>(adhesion_reduction_factor), lift<S2>(slip_reduction_factor),
-                           lift<S2>(kalker_reduction_factor)};
+    return PolachCreep<S2>{cast_parameter<S2>(friction_coefficient),
+                           cast_parameter<S2>(limit_friction_ratio),
+                           cast_parameter<S2>(friction_decrease_rate_s_per_m),
+                           cast_parameter<S2>(adhesion_reduction_factor),
+                           cast_parameter<S2>(slip_reduction_factor),
+                           cast_parameter<S2>(kalker_reduction_factor)};
   }
 };
 

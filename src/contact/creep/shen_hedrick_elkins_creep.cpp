@@ -24,7 +24,7 @@ CreepForces<T> ShenHedrickElkinsCreep<S>::forces(const CreepInput<T>& in) const 
       creep_detail::linear_kalker_forces(in, lift<T>(kalker_reduction_factor));
   const T mu_N = lift<T>(friction_coefficient) * in.normal_force_N;
   const T fx = lin.force_x_N / mu_N, fy = lin.force_y_N / mu_N;
-  const T u = creep_detail::regularised_root(T(fx * fx + fy * fy), kResultantRegularisation);
+  const T u = creep_detail::regularised_norm(T(fx * fx + fy * fy), kResultantRegularisation);
   // e(u) = g(u)/u
   const T e = value_of(u) < 3.0 ? T(1.0 - u / 3.0 + u * u / 27.0) : T(1.0 / u);
   return CreepForces<T>{T(e * lin.force_x_N), T(e * lin.force_y_N), T(e * lin.spin_moment_N_m)};

@@ -20,11 +20,14 @@
 //    derivative agree at u = 3 (1/3, -1/9, 2/27), so F is C2 across the
 //    saturation point (tested); the third derivative jumps.
 //  - u = |F_L| / (mu N) has the sqrt-at-zero problem. It is replaced by
-//    u_r = sqrt(u^2 + d^2) - d with d = kResultantRegularisation = 1e-9
-//    (dimensionless, in units of mu N): F = e(u_r) F_L is C-infinity at
-//    F_L = 0 and its derivative there is exactly r times Kalker's
-//    coefficients (e(0) = 1). Elsewhere u - d <= u_r <= u and e decreases,
-//    so |F| exceeds the unregularised law by at most a relative d (1e-9).
+//    u_r = u^2 / sqrt(u^2 + d^2) (creep_detail::regularised_norm) with
+//    d = kResultantRegularisation = 1e-9 (dimensionless, in units of mu N):
+//    F = e(u_r) F_L is C-infinity at F_L = 0 and its derivative there is
+//    exactly r times Kalker's coefficients (e(0) = 1). u - d^2/(2u) <= u_r <= u,
+//    so |F| differs from the unregularised law by at most mu N d^2/6 (~2e-19
+//    mu N) and is exactly mu N to round-off once saturated; u_r departs from
+//    u (first-order term u/3 of e replaced by u_r/3 ~ u^2/(3d)) only below
+//    u ~ d, i.e. |F_L| < 1e-9 mu N.
 //    Without regularisation F = F_L - |F_L| F_L / (3 mu N) + ... has a
 //    continuous first derivative but a direction-dependent second one at 0.
 // Zero normal force gives zero forces (the limit of mu N g -> 0).
@@ -44,8 +47,8 @@ template <class S> struct ShenHedrickElkinsCreep {
   void validate() const;  // std::invalid_argument naming the field
   template <class T> CreepForces<T> forces(const CreepInput<T>& in) const;
   template <class S2> ShenHedrickElkinsCreep<S2> cast() const {
-    return ShenHedrickElkinsCreep<S2>{lift<S2>(friction_coefficient),
-                                      lift<S2>(kalker_reduction_factor)};
+    return ShenHedrickElkinsCreep<S2>{cast_parameter<S2>(friction_coefficient),
+                                      cast_parameter<S2>(kalker_reduction_factor)};
   }
 };
 
