@@ -71,9 +71,10 @@ template <class S> struct PolachCreep {
   static constexpr double kSpinSwitchWidth = 1e-16;                // creepage^2
   static constexpr double kSlipVelocityRegularisation_m_per_s = 1e-6;
 
-  // Defaults: Polach 2005, recommended parameters for dry rail (Table 2 of
-  // the paper: k_A = 1.00, k_S = 0.40, mu0 = 0.55, A = 0.40, B = 0.60 s/m;
-  // wet rail: 0.30, 0.10, 0.30, 0.40, 0.20 s/m).
+  // Defaults: the parameter set Polach 2005 recommends for dry rail
+  // (k_A = 1.00, k_S = 0.40, mu0 = 0.55, A = 0.40, B = 0.60 s/m; for wet rail
+  // 0.30, 0.10, 0.30, 0.40, 0.20 s/m). Values as widely cited from the paper;
+  // check them against its table before quoting results.
   S friction_coefficient{0.55};            // mu0, at zero slip velocity; > 0
   S limit_friction_ratio{0.40};            // A = mu_inf / mu0, in (0, 1]; 1: constant mu
   S friction_decrease_rate_s_per_m{0.60};  // B, >= 0
