@@ -39,17 +39,7 @@ template <class T> struct CreepForces {
   T spin_moment_N_m{0.0};  // on the wheel, about nu
 };
 
-// Parameter scalar S into evaluation scalar T: a double parameter becomes an
-// AD constant; an AD parameter keeps its derivatives (then T must be AD too).
-template <class T, class S> T lift(const S& s) {
-  if constexpr (std::is_same_v<S, T>) {
-    return s;
-  } else {
-    static_assert(std::is_same_v<S, double>,
-                  "an AD parameter struct needs the AD evaluation scalar");
-    return constant<T>(s);
-  }
-}
+// Parameter scalar S into evaluation scalar T: lift<T>(s) (core/scalar.hpp).
 
 // Parameter conversion for cast<S2>(): to double keeps the value (drops the
 // derivatives), to AdScalar a double becomes a constant.
