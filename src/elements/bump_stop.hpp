@@ -16,6 +16,7 @@
 #include "elements/axis_deflection.hpp"
 #include "elements/element_ends.hpp"
 
+#include <cmath>
 #include <string>
 
 namespace railstab {
