@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 namespace railstab {
 
@@ -57,6 +58,20 @@ FlangeContact find_flange_contact(const ProfilePair& pair, double y_max_m, doubl
     prev = std::move(cur);
   }
   return fc;
+}
+
+std::vector<double> contact_jump_borders(const ProfilePair& pair, double half_range_m,
+                                         double step_m, double jump_m) {
+  const std::vector<CharacteristicRow> rows =
+      characteristic_functions(pair, -half_range_m, half_range_m, step_m);
+  std::vector<double> borders;
+  for (size_t i = 1; i < rows.size(); ++i) {
+    const double u0 = rows[i - 1].solution.left.front().wheel_u_m;
+    const double u1 = rows[i].solution.left.front().wheel_u_m;
+    if (std::abs(u1 - u0) > jump_m) borders.push_back(0.5 * (u0 + u1));
+  }
+  std::sort(borders.begin(), borders.end(), std::greater<double>());
+  return borders;
 }
 
 }  // namespace railstab

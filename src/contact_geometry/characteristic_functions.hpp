@@ -36,4 +36,13 @@ FlangeContact find_flange_contact(const ProfilePair& pair, double y_max_m = 0.01
                                   double step_m = 2e-4, double tolerance_m = 1e-7,
                                   double flange_contact_angle_rad = kFlangeContactAngle_rad);
 
+// Borders between the parts of the wheel that carry the rigid contact: the
+// left wheel's primary contact is followed over lateral shifts
+// -half_range..+half_range (step step_m); wherever it jumps along the wheel
+// by more than jump_m between neighbouring shifts, the middle of the jump is
+// a border (the wheel between the jump's ends never carries a rigid contact).
+// Sorted from the field side inwards (decreasing u).
+std::vector<double> contact_jump_borders(const ProfilePair& pair, double half_range_m,
+                                         double step_m = 1e-4, double jump_m = 1e-3);
+
 }  // namespace railstab

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace railstab {
 namespace {
@@ -145,15 +146,13 @@ std::vector<ContactPoint> find_contact_points(const ProfilePair& pair, const Whe
 ContactPoint minimum_gap_in_wheel_range(const ProfilePair& pair, const WheelPose& pose,
                                         double u_min, double u_max) {
   const GapFunction f(pair, pose);
-  double u0, u1;
-  if (!f.overlap(u0, u1) || std::max(u0, u_min) >= std::min(u1, u_max)) {
-    ContactPoint none;
-    none.interior = false;
-    none.vertical_gap_m = 1.0;  // far: no rail under this part of the wheel
-    return none;
-  }
-  u0 = std::max(u0, u_min);
-  u1 = std::min(u1, u_max);
+  // The whole part of the wheel, not only where it overlaps the rail: beyond
+  // its ends the rail continues as the straight line of its end slope (the
+  // spline's extension), steeply downwards for a rail head, so the gap there
+  // is large and smooth in the pose.
+  double u0 = std::max(u_min, pair.wheel_z.x_min());
+  double u1 = std::min(u_max, pair.wheel_z.x_max());
+  if (!(u1 > u0)) throw std::invalid_argument("minimum_gap_in_wheel_range: empty wheel range");
   std::vector<double> u, g;
   sample(f, u0, u1, u, g);
   const size_t i = size_t(std::min_element(g.begin(), g.end()) - g.begin());

@@ -69,7 +69,7 @@ inline constexpr double kContactSearchStep_m = 2.5e-4;
 std::vector<ContactPoint> find_contact_points(const ProfilePair& pair, const WheelPose& pose);
 
 // The lowest point of g over the part u_min <= u <= u_max of the wheel profile
-// (clipped to the overlap with the rail); interior = false if it lies at an
+// (not clipped to the rail: the rail spline continues straight beyond its ends); interior = false if it lies at an
 // end of that range. Used for the table slots (tread, flange).
 ContactPoint minimum_gap_in_wheel_range(const ProfilePair& pair, const WheelPose& pose,
                                         double u_min, double u_max);
