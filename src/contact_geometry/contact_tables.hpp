@@ -127,13 +127,15 @@ ContactPoint direct_slot_contact(const ProfilePair& pair, const ContactTable& ta
 // (not on_border) and all within `near_gap_m` of contact (gap0 minus the
 // lowest gap0 of the pose over all slots <= near_gap_m), separately for cells
 // whose corners lie on one smooth branch (corners' wheel_u within
-// branch_jump_m) and cells across a jump of the lowest point.
+// branch_jump_m; a smooth branch moves along the wheel by 1/(2B) per radian
+// of roll, ~1.5 mm per 5 mrad step for B ~ 1.7 1/m) and cells across a jump
+// of the lowest point.
 struct TableResolution {
   std::array<double, kTableQuantities> smooth{}, across_jump{};
   int smooth_cells = 0, jump_cells = 0;
 };
 TableResolution measure_table_resolution(const ProfilePair& pair, const ContactTable& table,
-                                         double near_gap_m = 1e-3, double branch_jump_m = 1e-3);
+                                         double near_gap_m = 1e-3, double branch_jump_m = 2.5e-3);
 
 // ----- implementation of the template -----
 
