@@ -491,6 +491,9 @@ TEST(SceneLoader, EveryCaseFileLoadsWithTheExpectedBodyCount) {
   size_t files_seen = 0;
   for (const auto& entry : std::filesystem::directory_iterator(RAILSTAB_CASES_DIR)) {
     if (entry.path().extension() != ".toml") continue;
+    // A contact-geometry-only file, read by `railstab contact-geometry` until the scene
+    // loader knows geometry = "profiles" (src/profiles/profile_contact_scene.hpp).
+    if (entry.path().filename() == "s1002_uic60_contact.toml") continue;
     ++files_seen;
     const std::string file = entry.path().filename().string();
     SCOPED_TRACE(file);

@@ -1,0 +1,64 @@
+#include "cli/contact_geometry_command.hpp"
+
+#include "contact_geometry/contact_geometry_summary.hpp"
+#include "profiles/profile_contact_scene.hpp"
+#include "report/contact_geometry_report.hpp"
+
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+
+namespace railstab {
+namespace {
+
+struct ContactGeometryArgs {
+  std::string scene;
+  std::string contact;
+  std::string out_dir = "out";
+};
+
+void run_contact_geometry(const ContactGeometryArgs& a) {
+  const ProfileContactSpec spec = read_profile_contact(a.scene, a.contact);
+  const ProfilePair pair = load_profile_pair(spec);
+  const ContactGeometrySummary summary = summarise_contact_geometry(pair);
+  std::filesystem::create_directories(a.out_dir);
+  const std::string scene_name = std::filesystem::path(a.scene).stem().string();
+  const std::string prefix =
+      (std::filesystem::path(a.out_dir) / (scene_name + "_" + spec.name)).string();
+  const ContactGeometryFiles files =
+      write_contact_geometry_report(pair, summary, scene_name, spec.name, prefix);
+  std::cout << std::setprecision(4) << scene_name << " / " << spec.name << ": "
+            << pair.wheel.source << " on " << pair.rail.source << "\n"
+            << "  equivalent conicity (EN 15302) at 3 mm: " << summary.equivalent_conicity_at_3mm
+            << "\n";
+  if (summary.flange.found)
+    std::cout << "  flange contact at a lateral shift of " << summary.flange.lateral_shift_m * 1e3
+              << " mm (contact angle " << summary.flange.tread_contact_angle_rad << " -> "
+              << summary.flange.flange_contact_angle_rad << " rad)\n";
+  else
+    std::cout << "  no flange contact up to 14 mm lateral shift\n";
+  std::cout << "wrote " << files.characteristic_csv << "\nwrote " << files.conicity_csv
+            << "\nwrote " << files.json << "\n";
+  for (const std::string& png : files.plots) std::cout << "wrote " << png << "\n";
+}
+
+}  // namespace
+
+void register_contact_geometry_command(CLI::App& app) {
+  auto a = std::make_shared<ContactGeometryArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "contact-geometry",
+      "wheel-rail contact geometry of a profile pair: characteristic functions (delta r, roll, "
+      "contact angles, radii) over lateral shifts -10..10 mm, EN 15302 equivalent conicity, plots");
+  cmd->add_option("scene", a->scene, "scene file (TOML) with a [contacts.NAME] table, geometry = "
+                                     "\"profiles\"")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--contact", a->contact,
+                  "name of the contact (default: the only one with geometry = \"profiles\")");
+  cmd->add_option("--out", a->out_dir, "output directory")->capture_default_str();
+  cmd->callback([a] { run_contact_geometry(*a); });
+}
+
+}  // namespace railstab
