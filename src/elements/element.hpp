@@ -6,6 +6,7 @@
 // then checks that the kind provides everything those visits call:
 //   kType, kInternalStates, ends, set_nominal, elastic_load, set_preload,
 //   apply<T>, potential, internal_state_name, cast<S2>.
+#include "elements/anti_roll_bar.hpp"
 #include "elements/bump_stop.hpp"
 #include "elements/line_spring_damper.hpp"
 #include "elements/rotational_spring_damper.hpp"
@@ -19,7 +20,8 @@ namespace railstab {
 
 template <class S>
 using ElementTpl = std::variant<SpringDamper3d<S>, RotationalSpringDamper<S>, SeriesSpringDamper<S>,
-                                LineSpringDamper<S>, BumpStop<S>, TractionRod<S>>;
+                                LineSpringDamper<S>, BumpStop<S>, TractionRod<S>,
+                                AntiRollBar<S>>;
 
 template <class S> const ElementEnds& ends_of(const ElementTpl<S>& e) {
   return std::visit([](const auto& x) -> const ElementEnds& { return x.ends; }, e);

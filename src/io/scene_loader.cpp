@@ -808,6 +808,15 @@ const std::vector<ElementReader>& element_readers() {
          e.damping_N_s_per_m = non_negative(t, "damping_N_s_per_m", "N s/m", 0.0);
          return with_ends(e, ends);
        }},
+      {AntiRollBar<double>::kType,
+       {"roll_stiffness_N_m_per_rad", "link_half_spacing_m"},
+       true,
+       [](const TableReader& t, const ElementEnds& ends) -> ElementSpec {
+         AntiRollBar<double> e;
+         e.roll_stiffness_N_m_per_rad = positive(t, "roll_stiffness_N_m_per_rad", "N m/rad");
+         e.link_half_spacing_m = positive(t, "link_half_spacing_m", "m");
+         return with_ends(e, ends);
+       }},
   };
   return readers;
 }

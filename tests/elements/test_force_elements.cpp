@@ -46,7 +46,9 @@ std::array<BodyMotion<double>, 2> motions(const Pair& p, double h) {
 
 // The element kinds under test, each with random parameters; `damped`
 // false gives the purely elastic twin.
-enum class Kind { spring_3d, rotational, series, line_linear, line_table, bump_stop, traction_rod };
+enum class Kind {
+  spring_3d, rotational, series, line_linear, line_table, bump_stop, traction_rod, anti_roll_bar
+};
 const char* kind_name(Kind k) {
   switch (k) {
     case Kind::spring_3d: return "spring_3d";
@@ -56,6 +58,7 @@ const char* kind_name(Kind k) {
     case Kind::line_table: return "line_table";
     case Kind::bump_stop: return "bump_stop";
     case Kind::traction_rod: return "traction_rod";
+    case Kind::anti_roll_bar: return "anti_roll_bar";
   }
   return "?";
 }
@@ -130,6 +133,16 @@ ElementSpec element(Kind kind, std::mt19937& rng, bool damped) {
       e.free_length_m = 1.1;
       return e;
     }
+    case Kind::anti_roll_bar: {
+      AntiRollBar<double> e;
+      e.ends = ends;
+      e.roll_stiffness_N_m_per_rad = 3e6 * u(rng);
+      e.link_half_spacing_m = 1.2;
+      e.preload_N_m = 400.0;
+      e.free_vector_left_m = Eigen::Vector3d(0.1, 0.0, -0.05);
+      e.free_vector_right_m = Eigen::Vector3d(0.1, 0.0, 0.02);
+      return e;
+    }
   }
   throw std::logic_error("kind");
 }
@@ -188,7 +201,8 @@ TEST_P(ElementKinds, SpringIsConservative) {
 // velocity for the rotational one, dl/dt for line elements).
 TEST_P(ElementKinds, DamperDissipates) {
   const auto [kind, wheelset1] = GetParam();
-  if (kind == Kind::series || kind == Kind::bump_stop) GTEST_SKIP() << "no parallel damper";
+  if (kind == Kind::series || kind == Kind::bump_stop || kind == Kind::anti_roll_bar)
+    GTEST_SKIP() << "no parallel damper";
   std::mt19937 rng(5);
   for (int trial = 0; trial < 20; ++trial) {
     const Pair p = random_pair(rng, wheelset1);
@@ -242,5 +256,5 @@ INSTANTIATE_TEST_SUITE_P(
     Elements, ElementKinds,
     ::testing::Combine(::testing::Values(Kind::spring_3d, Kind::rotational, Kind::series,
                                          Kind::line_linear, Kind::line_table, Kind::bump_stop,
-                                         Kind::traction_rod),
+                                         Kind::traction_rod, Kind::anti_roll_bar),
                        ::testing::Bool()));
