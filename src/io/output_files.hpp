@@ -13,13 +13,19 @@ namespace railstab {
 void write_file_atomically(const std::string& path,
                            const std::function<void(std::ostream&)>& write);
 
+// The CSV header rows below: names quoted per RFC 4180 (io/csv.hpp), so a
+// header may span more than one physical line (csv_physical_lines).
+std::string trajectory_csv_header(const Model& model);
+std::string absolute_roll_csv_header(const Model& model);
+
 // CSV: time_s, then <body>.<coordinate> for all six coordinates of every body
-// (relative to the body's track frame). Throws if a value is not finite.
-void write_trajectory_csv(const std::string& path, const Model& model, const Trajectory& traj);
+// (relative to the body's track frame). Throws, naming the value, if one is
+// not finite.
+void write_trajectory_csv(std::ostream& out, const Model& model, const Trajectory& traj);
 
 // CSV: time_s, then <body>.absolute_roll_rad: the roll of each body relative
 // to the horizontal (W), i.e. track cant roll plus the body's own roll;
 // exactly asin of the z-component of the body's y axis (Z-X-Y angles in W).
-void write_absolute_roll_csv(const std::string& path, const Model& model, const Trajectory& traj);
+void write_absolute_roll_csv(std::ostream& out, const Model& model, const Trajectory& traj);
 
 }  // namespace railstab
