@@ -143,6 +143,7 @@ void run_simulate(const SimulateArgs& args) {
     trajectory_csv.final_path = stem + ".csv";
     trajectory_csv.staged_path = outputs.write(trajectory_csv.final_path, write_trajectory);
   } else {
+    outputs.replaces(stem + ".csv");  // an earlier default CSV would not match this run
     trajectory_csv.final_path = std::filesystem::absolute(args.csv).string();
     trajectory_csv.staged_path = outputs.write_at(args.csv, write_trajectory);
   }

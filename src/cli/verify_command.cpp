@@ -123,6 +123,7 @@ void run_verify(const VerifyArgs& a) {
   OutputSet outputs(a.out_dir);
   for (const std::string& name : fit_plot_file_names(stem)) outputs.replaces(name);
   auto json_writer = [&](std::ostream& out) { write_verification_json(out, s.model, r); };
+  outputs.replaces(stem + ".json");  // with --json elsewhere, an earlier default goes
   if (a.json.empty()) outputs.write(stem + ".json", json_writer);
   else outputs.write_at(a.json, json_writer);
   if (a.plots) plot_fit(r, outputs, stem, s.model);
