@@ -1,6 +1,6 @@
 #pragma once
-// Output files are written whole or not at all: content goes to a temporary
-// file beside the target, which is renamed over it only when complete.
+// The simulation's data files (CSV). Commands write them into an OutputSet
+// (io/output_set.hpp), which makes the whole set of a run all-or-nothing.
 #include "integrate/integrator.hpp"
 #include "model/model.hpp"
 
@@ -9,9 +9,6 @@
 #include <string>
 
 namespace railstab {
-
-void write_file_atomically(const std::string& path,
-                           const std::function<void(std::ostream&)>& write);
 
 // The CSV header rows below: names quoted per RFC 4180 (io/csv.hpp), so a
 // header may span more than one physical line (csv_physical_lines).

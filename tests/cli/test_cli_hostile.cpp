@@ -188,6 +188,15 @@ TEST(CliHostile, NamesAndOutFolderRunNoCommands) {
       EXPECT_GT(fs::file_size(e.path()), 0u) << e.path();
     }
   EXPECT_GE(pngs, 3) << run.output;
+  // The same body name in a scene with a plain name and a plain --out: the
+  // gnuplot script itself is reached, and its title strings must hold.
+  const fs::path plain = hostile_scene(dir, "plain",
+                                       "w'; system(\"touch PWNED_GNUPLOT\"); print '");
+  const auto run2 = run_railstab(
+      {"simulate", plain.string(), "--t-end", "0.2", "--no-error-estimate", "--out", "out2"}, dir);
+  EXPECT_EQ(run2.exit_code, 0) << run2.output;
+  EXPECT_FALSE(any_file_named(dir, "PWNED_GNUPLOT")) << run2.output;
+  EXPECT_TRUE(fs::exists(dir / "out2/plain_30mps_wheelset_lateral.png")) << run2.output;
   fs::remove_all(dir);
 }
 
