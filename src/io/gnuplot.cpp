@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
+#include <fcntl.h>
 #include <spawn.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -75,6 +76,8 @@ void run_gnuplot(const std::filesystem::path& script, const std::filesystem::pat
   posix_spawn_file_actions_init(&actions);
   // glibc >= 2.29: the child changes directory, the parent's stays put.
   posix_spawn_file_actions_addchdir_np(&actions, working_dir.c_str());
+  // No terminal input: a script can never wait for a key press (pause -1).
+  posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
   pid_t pid = 0;
   const int spawn_error = posix_spawnp(&pid, "gnuplot", &actions, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
