@@ -22,7 +22,15 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help
+    // CLI11's messages name the flag and the value ("--budget: expected a
+    // finite number in (0, 86400] s, got \"nan\"", "Could not convert:
+    // --step = abc"); say which command's --help lists the flags.
+    std::string help = "railstab --help";
+    for (const CLI::App* sub : app.get_subcommands()) help = "railstab " + sub->get_name() + " --help";
+    std::cerr << "railstab: error: " << e.what() << "\n(the options are listed by `" << help
+              << "`)\n";
+    return e.get_exit_code();
   } catch (const std::exception& e) {
     std::cerr << "railstab: error: " << e.what() << "\n";
     return 1;

@@ -1,11 +1,16 @@
 #include "cli/simulate_command.hpp"
 
+#include "cli/numeric_flags.hpp"
 #include "setup/prepare_scene.hpp"
 #include "integrate/error_estimate.hpp"
 #include "integrate/integrator.hpp"
 #include "integrate/work_precision.hpp"
+#include "io/csv.hpp"
+#include "io/file_names.hpp"
+#include "io/gnuplot.hpp"
 #include "io/json_writer.hpp"
 #include "io/output_files.hpp"
+#include "io/output_set.hpp"
 #include "model/equations_of_motion.hpp"
 #include "report/time_plots.hpp"
 
@@ -101,6 +106,7 @@ std::string run_json(const Model& model, double speed_m_per_s, const Integration
 }
 
 void run_simulate(const SimulateArgs& args) {
+  if (args.plots) require_gnuplot();  // before the run, not after it
   PreparedScene scene = prepare_scene(args.scene, args.overrides);
   const Model& model = scene.model;
   std::cerr << "scene " << model.name << ": " << model.bodies.size() << " bodies, "
@@ -125,23 +131,33 @@ void run_simulate(const SimulateArgs& args) {
     error = estimate_integration_error(model, scene.speed_m_per_s, x0, opt, traj);
   }
 
-  const std::string base =
-      (std::filesystem::path(args.out_dir) / (model.name + "_" +
-                                              std::to_string(int(std::lround(scene.speed_m_per_s))) +
-                                              "mps")).string();
-  const std::string csv = args.csv.empty() ? base + ".csv" : args.csv;
-  const std::string roll_csv = base + "_absolute_roll.csv";
-  const std::string json = base + "_run.json";
-  // Data files first (each written atomically; the JSON text is rendered
-  // before any of them), the plots, which are views of the CSVs, last.
+  // All files are staged and committed together (io/output_set.hpp): data
+  // files, run summary, then the plots, which are views of the CSVs.
+  const std::string stem = file_stem(model.name) + "_" + speed_file_tag(scene.speed_m_per_s);
   const std::string summary = run_json(model, scene.speed_m_per_s, opt, traj, error);
-  write_trajectory_csv(csv, model, scene.speed_m_per_s, traj);
-  write_absolute_roll_csv(roll_csv, model, scene.speed_m_per_s, traj);
-  write_file_atomically(json, [&](std::ostream& out) { out << summary; });
-  for (const std::string& f : {csv, roll_csv, json}) std::cout << "wrote " << f << "\n";
+  OutputSet outputs(args.out_dir);
+  for (const std::string& name : time_plot_file_names(stem)) outputs.replaces(name);
+  PlottedCsv trajectory_csv, roll_csv;
+  auto write_trajectory = [&](std::ostream& out) { write_trajectory_csv(out, model, scene.speed_m_per_s, traj); };
+  if (args.csv.empty()) {
+    trajectory_csv.final_path = stem + ".csv";
+    trajectory_csv.staged_path = outputs.write(trajectory_csv.final_path, write_trajectory);
+  } else {
+    outputs.replaces(stem + ".csv");  // an earlier default CSV would not match this run
+    trajectory_csv.final_path = std::filesystem::absolute(args.csv).string();
+    trajectory_csv.staged_path = outputs.write_at(args.csv, write_trajectory);
+  }
+  trajectory_csv.staged_path = std::filesystem::absolute(trajectory_csv.staged_path).string();
+  trajectory_csv.header_lines = csv_physical_lines(trajectory_csv_header(model));
+  roll_csv.final_path = stem + "_absolute_roll.csv";
+  roll_csv.staged_path = std::filesystem::absolute(outputs.write(
+      roll_csv.final_path, [&](std::ostream& out) { write_absolute_roll_csv(out, model, scene.speed_m_per_s, traj); }));
+  roll_csv.header_lines = csv_physical_lines(absolute_roll_csv_header(model));
+  outputs.write(stem + "_run.json", [&](std::ostream& out) { out << summary; });
   if (args.plots)
-    for (const std::string& png : plot_time_histories(model, scene.speed_m_per_s, csv, roll_csv, base))
-      std::cout << "wrote " << png << "\n";
+    plot_time_histories(model, scene.speed_m_per_s, outputs, stem, trajectory_csv, roll_csv, opt.t_start_s,
+                        traj.times_s.back());
+  for (const std::string& f : outputs.commit()) std::cout << "wrote " << f << "\n";
   const double simulated = traj.times_s.back() - opt.t_start_s;
   std::cout << "integrator " << IntegratorVariant{opt.kind, opt.order}.label() << " rtol "
             << opt.relative_tolerance << " atol " << opt.absolute_tolerance << ": "
@@ -173,8 +189,10 @@ void register_simulate_command(CLI::App& app) {
   auto args = std::make_shared<SimulateArgs>();
   CLI::App* cmd = app.add_subcommand("simulate", "integrate the nonlinear model in time");
   cmd->add_option("scene", args->scene, "scene file (TOML)")->required()->check(CLI::ExistingFile);
-  cmd->add_option("--speed", args->overrides.speed_m_per_s, "speed V in m/s (overrides the scene)");
-  cmd->add_option("--t-end", args->overrides.t_end_s, "end time in s (overrides the scene)");
+  cmd->add_option("--speed", args->overrides.speed_m_per_s, "speed V in m/s (overrides the scene)")
+      ->check(finite_in(flag_ranges::speed_m_per_s));
+  cmd->add_option("--t-end", args->overrides.t_end_s, "end time in s (overrides the scene)")
+      ->check(finite_in(flag_ranges::t_end_s));
   cmd->add_option("--csv", args->csv, "CSV output file (default OUT/<scene>_<V>mps.csv)");
   cmd->add_option("--out", args->out_dir, "output directory")->capture_default_str();
   cmd->add_option("--integrator", args->integrator,
@@ -182,9 +200,9 @@ void register_simulate_command(CLI::App& app) {
                   "(maximum) order, e.g. cvode_bdf_q2 (default: the scene's [simulation] "
                   "integrator, arkode_dirk)");
   cmd->add_option("--rtol", args->rtol, "relative tolerance (default: the scene's, 1e-3)")
-      ->check(CLI::PositiveNumber);
+      ->check(finite_in(flag_ranges::relative_tolerance));
   cmd->add_option("--atol", args->atol, "absolute tolerance (default: the scene's, 1e-6)")
-      ->check(CLI::PositiveNumber);
+      ->check(finite_in(flag_ranges::absolute_tolerance));
   cmd->add_flag("!--no-error-estimate", args->estimate_error,
                 "skip the second run at 100x tighter tolerances that estimates the error");
   cmd->add_flag("--stop-on-lift-off", args->stop_on_lift_off,

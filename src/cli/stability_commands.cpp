@@ -1,13 +1,17 @@
 #include "cli/stability_commands.hpp"
 
+#include "cli/numeric_flags.hpp"
 #include "setup/prepare_scene.hpp"
+#include "io/file_names.hpp"
+#include "io/gnuplot.hpp"
 #include "io/json_writer.hpp"
-#include "io/output_files.hpp"
+#include "io/output_set.hpp"
 #include "model/equations_of_motion.hpp"
 #include "report/stability_report.hpp"
 #include "stability/speed_analysis.hpp"
 
-#include <filesystem>
+#include <cmath>
+#include <sstream>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -22,13 +26,15 @@ struct CommonArgs {
   std::string out_dir = "out";
   std::string solver = "auto";
   double hunting_band_hz = 20.0;
+  bool plots = true;
 };
 
 void add_common(CLI::App* cmd, CommonArgs& a) {
   cmd->add_option("scene", a.scene, "scene file (TOML)")->required()->check(CLI::ExistingFile);
   cmd->add_option("--arc-length", a.overrides.reference_arc_length_m,
                   "arc length (m) of the scene's reference point, e.g. inside an arc for "
-                  "steady curving");
+                  "steady curving")
+      ->check(finite_in(flag_ranges::arc_length_m));
   cmd->add_option("--out", a.out_dir, "output directory")->capture_default_str();
 }
 
@@ -41,7 +47,8 @@ void add_solver(CLI::App* cmd, CommonArgs& a) {
   cmd->add_option("--hunting-band", a.hunting_band_hz,
                   "highest mode frequency (Hz) that decides stability; faster unstable modes "
                   "are reported as warnings")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(finite_in(flag_ranges::frequency_hz));
 }
 
 StabilityOptions stability_options(const CommonArgs& a) {
@@ -53,8 +60,24 @@ StabilityOptions stability_options(const CommonArgs& a) {
   return o;
 }
 
-std::string prefix_for(const CommonArgs& a, const Model& m) {
-  return (std::filesystem::path(a.out_dir) / m.name).string();
+// Output names start with the scene name made safe (io/file_names.hpp), so
+// a scene called "../evil" still writes inside --out.
+std::string stem_for(const Model& m) { return file_stem(m.name); }
+
+// Every coordinate of the steady state must be finite before anything is
+// printed or written (an equilibrium printed as "inf mm" was exit 0).
+void check_finite_state(const Model& model, double speed_m_per_s, const Eigen::MatrixXd& q6,
+                        const Eigen::MatrixXd& qd6) {
+  for (Eigen::Index b = 0; b < q6.cols(); ++b)
+    for (int c = 0; c < 6; ++c)
+      if (!std::isfinite(q6(c, b)) || !std::isfinite(qd6(c, b))) {
+        std::ostringstream msg;
+        msg << "equilibrium of " << model.name << " at " << speed_m_per_s
+            << " m/s: " << model.bodies[size_t(b)].name << '.' << kCoordinateNames[c]
+            << " is not finite (position " << q6(c, b) << ", rate " << qd6(c, b)
+            << "); no output written";
+        throw std::runtime_error(msg.str());
+      }
 }
 
 // --- equilibrium ---------------------------------------------------------------
@@ -65,12 +88,16 @@ void run_equilibrium(const CommonArgs& a) {
   rhs(model, s.speed_m_per_s, 0.0, s.equilibrium.state, &details);
   Eigen::MatrixXd q6, qd6;
   model.full_coordinates(0.0, s.speed_m_per_s, s.equilibrium.state, q6, qd6);
-  const std::string path = prefix_for(a, model) + "_equilibrium.json";
-  std::cout << std::setprecision(6) << "equilibrium of " << model.name << " at "
-            << s.speed_m_per_s << " m/s: " << s.equilibrium.iterations
-            << " Newton iterations, max acceleration residual " << s.equilibrium.max_acceleration
-            << "\n";
-  write_file_atomically(path, [&](std::ostream& out) {
+  check_finite_state(model, s.speed_m_per_s, q6, qd6);
+  OutputSet outputs(a.out_dir);
+  // The text for the terminal is collected while the JSON is rendered and
+  // shown only once the JSON holds no non-finite value.
+  std::ostringstream shown;
+  shown << std::setprecision(6) << "equilibrium of " << model.name << " at "
+        << s.speed_m_per_s << " m/s: " << s.equilibrium.iterations
+        << " Newton iterations, max acceleration residual " << s.equilibrium.max_acceleration
+        << "\n";
+  outputs.write(stem_for(model) + "_equilibrium.json", [&](std::ostream& out) {
     JsonWriter j(out);
     j.begin_object().field("scene", model.name).field("speed_m_s", s.speed_m_per_s);
     j.field("newton_iterations", s.equilibrium.iterations)
@@ -86,7 +113,7 @@ void run_equilibrium(const CommonArgs& a) {
         }
         j.field(kCoordinateNames[c] + "_offset", offset);
       }
-      std::cout << "  " << std::left << std::setw(10) << model.bodies[b].name << std::right
+      shown << "  " << std::left << std::setw(10) << model.bodies[b].name << std::right
                 << " lateral " << std::setw(12) << q6(1, b) * 1e3 << " mm  yaw " << std::setw(12)
                 << q6(5, b) * 1e3 << " mrad  roll " << std::setw(12) << q6(3, b) * 1e3
                 << " mrad  vertical offset " << std::setw(12)
@@ -110,7 +137,7 @@ void run_equilibrium(const CommonArgs& a) {
             .field("total_force_on_wheelset_I_N_y", w.force_I.y())
             .field("total_force_on_wheelset_I_N_z", w.force_I.z())
             .end_object();
-        std::cout << "      " << (w.side > 0 ? "left " : "right") << " wheel load "
+        shown << "      " << (w.side > 0 ? "left " : "right") << " wheel load "
                   << w.normal_force_N << " N, creepages (" << w.creep_x << ", " << w.creep_y
                   << ", " << w.creep_spin_per_m << " 1/m), creep forces (" << w.creep_force_x_N
                   << ", " << w.creep_force_y_N << " N, " << w.spin_moment_N_m << " N m)\n";
@@ -119,7 +146,8 @@ void run_equilibrium(const CommonArgs& a) {
     }
     j.end_array().end_object();
   });
-  std::cout << "wrote " << path << "\n";
+  std::cout << shown.str();
+  for (const std::string& f : outputs.commit()) std::cout << "wrote " << f << "\n";
 }
 
 // --- eigen ---------------------------------------------------------------------
@@ -144,9 +172,9 @@ void run_eigen(const CommonArgs& a, double max_hz) {
               << std::setw(11) << m.damping_ratio << std::setw(12) << m.residual << "   "
               << m.name << "\n";
   }
-  const std::string path = prefix_for(a, s.model) + "_eigen_" +
-                           std::to_string(int(std::lround(p.speed_m_per_s))) + "mps.json";
-  write_file_atomically(path, [&](std::ostream& out) {
+  OutputSet outputs(a.out_dir);
+  outputs.write(stem_for(s.model) + "_eigen_" + speed_file_tag(p.speed_m_per_s) + ".json",
+                [&](std::ostream& out) {
     JsonWriter j(out);
     j.begin_object().field("scene", s.model.name).field("speed_m_s", p.speed_m_per_s);
     j.field("eigen_solver", eigen_solver_name(p.solver_used)).field("states", int(p.linear.A.rows()));
@@ -165,11 +193,13 @@ void run_eigen(const CommonArgs& a, double max_hz) {
           .end_object();
     j.end_array().end_object();
   });
-  std::cout << "wrote " << path << "\n";
+  for (const std::string& f : outputs.commit()) std::cout << "wrote " << f << "\n";
 }
 
 // --- critical speed / sweep -----------------------------------------------------------
 void run_critical_speed(const CommonArgs& a, CriticalSpeedOptions opt) {
+  check_speed_grid(opt.from_m_per_s, opt.to_m_per_s, opt.grid_step_m_per_s);
+  if (a.plots) require_gnuplot();  // before the sweep, not after it
   const PreparedScene s = prepare_scene(a.scene, a.overrides);
   opt.stability = stability_options(a);
   opt.progress = [](const std::string& line) { std::cerr << line << "\n"; };
@@ -178,7 +208,9 @@ void run_critical_speed(const CommonArgs& a, CriticalSpeedOptions opt) {
   const CriticalSpeedResult r = find_critical_speed(s.model, s.equilibrium.state, s.speed_m_per_s, opt);
   const std::string solver =
       r.grid.empty() ? a.solver : eigen_solver_name(r.grid.front().solver_used);
-  const StabilityFiles files = write_stability_results(s.model, r, prefix_for(a, s.model), solver);
+  OutputSet outputs(a.out_dir);
+  write_stability_results(s.model, r, outputs, stem_for(s.model), solver, a.plots);
+  const std::vector<std::string> written = outputs.commit();
   std::cout << std::setprecision(6);
   if (r.unstable_at_start) {
     std::cout << s.model.name << ": already unstable at " << r.from_m_per_s << " m/s\n";
@@ -210,8 +242,7 @@ void run_critical_speed(const CommonArgs& a, CriticalSpeedOptions opt) {
       break;
     }
   std::cout << r.evaluations << " speed evaluations in " << r.seconds << " s\n";
-  for (const std::string& f : {files.csv, files.json, files.markdown}) std::cout << "wrote " << f << "\n";
-  for (const std::string& f : files.plots) std::cout << "wrote " << f << "\n";
+  for (const std::string& f : written) std::cout << "wrote " << f << "\n";
 }
 
 }  // namespace
@@ -222,7 +253,8 @@ void register_stability_commands(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand(
         "equilibrium", "steady rolling / curving equilibrium: offsets, wheel loads, creepages");
     add_common(cmd, *a);
-    cmd->add_option("--speed", a->overrides.speed_m_per_s, "speed V in m/s");
+    cmd->add_option("--speed", a->overrides.speed_m_per_s, "speed V in m/s")
+        ->check(finite_in(flag_ranges::speed_m_per_s));
     cmd->callback([a] { run_equilibrium(*a); });
   }
   {
@@ -231,9 +263,11 @@ void register_stability_commands(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand("eigen", "eigenvalues and modes at one speed");
     add_common(cmd, *a);
     add_solver(cmd, *a);
-    cmd->add_option("--speed", a->overrides.speed_m_per_s, "speed V in m/s");
+    cmd->add_option("--speed", a->overrides.speed_m_per_s, "speed V in m/s")
+        ->check(finite_in(flag_ranges::speed_m_per_s));
     cmd->add_option("--max-frequency", *max_hz, "list modes up to this frequency (Hz)")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->check(finite_in(flag_ranges::list_frequency_hz));
     cmd->callback([a, max_hz] { run_eigen(*a, *max_hz); });
   }
   for (const bool is_sweep : {false, true}) {
@@ -250,9 +284,16 @@ void register_stability_commands(CLI::App& app) {
                    "Markdown report and plots");
     add_common(cmd, *a);
     add_solver(cmd, *a);
-    cmd->add_option("--from", opt->from_m_per_s, "lowest speed (m/s)")->capture_default_str();
-    cmd->add_option("--to", opt->to_m_per_s, "highest speed (m/s)")->capture_default_str();
-    cmd->add_option("--step", opt->grid_step_m_per_s, "grid step (m/s)")->capture_default_str();
+    cmd->add_option("--from", opt->from_m_per_s, "lowest speed (m/s)")
+        ->capture_default_str()
+        ->check(finite_in(flag_ranges::speed_m_per_s));
+    cmd->add_option("--to", opt->to_m_per_s, "highest speed (m/s)")
+        ->capture_default_str()
+        ->check(finite_in(flag_ranges::speed_m_per_s));
+    cmd->add_option("--step", opt->grid_step_m_per_s, "grid step (m/s)")
+        ->capture_default_str()
+        ->check(finite_in(flag_ranges::speed_step_m_per_s));
+    cmd->add_flag("!--no-plots", a->plots, "do not run gnuplot (data, JSON and report only)");
     cmd->callback([a, opt] { run_critical_speed(*a, *opt); });
   }
 }

@@ -1,12 +1,14 @@
 #include "cli/work_precision_command.hpp"
 
+#include "cli/numeric_flags.hpp"
 #include "setup/prepare_scene.hpp"
 #include "integrate/work_precision.hpp"
-#include "io/output_files.hpp"
-#include "report/time_plots.hpp"
+#include "io/csv.hpp"
+#include "io/file_names.hpp"
+#include "io/gnuplot.hpp"
+#include "io/output_set.hpp"
 
 #include <cmath>
-#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <map>
@@ -27,14 +29,8 @@ struct WorkPrecisionArgs {
   bool plots = true;
 };
 
-std::string csv_field(const std::string& s) {
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string q = "\"";
-  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c == '\n' ? ' ' : c);
-  return q + "\"";
-}
-
-// Empty for a run without a result (gave up, failed, skipped).
+// Empty for a run without a result (gave up, failed, skipped): the status
+// column says why. Only the run's outcome columns may be empty this way.
 std::string number(double v) {
   if (!std::isfinite(v)) return "";
   std::ostringstream s;
@@ -42,20 +38,25 @@ std::string number(double v) {
   return s.str();
 }
 
-void write_csv(const std::string& path, const WorkPrecisionResult& r) {
-  write_file_atomically(path, [&](std::ostream& out) {
+// A value every run has (tolerances, the reference's): never empty, never
+// non-finite.
+std::string required_number(double v, const std::string& what) { return csv_number(v, what, 6); }
+
+void write_csv(std::ostream& out, const WorkPrecisionResult& r) {
+  {
     out << "integrator,rtol,atol,error,cpu_seconds,steps,rhs_evaluations,jacobians,status,"
            "wall_seconds,error_coordinate,lateral_error\n";
     for (const WorkPrecisionRun& run : r.runs) {
       const bool done = std::isfinite(run.error);
-      out << run.label << ',' << number(run.rtol) << ',' << number(run.atol) << ','
+      out << csv_field(run.label) << ',' << required_number(run.rtol, run.label + " rtol") << ','
+          << required_number(run.atol, run.label + " atol") << ','
           << number(run.error) << ',' << (done ? number(run.cpu_seconds) : "") << ','
           << run.stats.steps << ',' << run.stats.rhs_evaluations << ','
           << run.stats.jacobian_evaluations << ',' << csv_field(run.status) << ','
-          << (done ? number(run.wall_seconds) : "") << ',' << run.error_coordinate << ','
+          << (done ? number(run.wall_seconds) : "") << ',' << csv_field(run.error_coordinate) << ','
           << number(run.lateral_error) << '\n';
     }
-  });
+  }
 }
 
 std::vector<std::string> labels_in_order(const WorkPrecisionResult& r) {
@@ -66,14 +67,15 @@ std::vector<std::string> labels_in_order(const WorkPrecisionResult& r) {
 }
 
 // Gnuplot data: one block per integrator (finished runs only), then the plot.
-std::string write_plot(const std::string& prefix, const Model& model, double speed_m_per_s, double t_end,
-                       const WorkPrecisionResult& r) {
-  const std::string dat = prefix + "_work_precision.dat";
-  const std::string png = prefix + "_work_precision.png";
-  const std::string gp = prefix + "_work_precision.gp";
+void write_plot(OutputSet& outputs, const std::string& stem, const Model& model,
+                double speed_m_per_s, double t_end,
+                const WorkPrecisionResult& r) {
+  const std::string dat = stem + "_work_precision.dat";
+  const std::string png = stem + "_work_precision.png";
+  const std::string gp = stem + "_work_precision.gp";
   const std::vector<std::string> labels = labels_in_order(r);
   std::vector<std::string> plotted;
-  write_file_atomically(dat, [&](std::ostream& out) {
+  outputs.write(dat, [&](std::ostream& out) {
     out << "# cpu_seconds error rtol (one block per integrator)\n";
     for (const std::string& label : labels) {
       std::ostringstream block;
@@ -86,12 +88,15 @@ std::string write_plot(const std::string& prefix, const Model& model, double spe
       plotted.push_back(label);
     }
   });
-  write_file_atomically(gp, [&](std::ostream& out) {
-    out << "set terminal pngcairo size 900,600 font 'Sans,10' noenhanced\n"
-        << "set output '" << png << "'\n"
-        << "set title '" << model.name << " at " << speed_m_per_s << " m/s, " << t_end
+  std::ostringstream title;
+  title << model.name << " at " << speed_m_per_s << " m/s, " << t_end
         << " s: work-precision (reference " << integrator_name(r.reference.kind) << " rtol "
-        << number(r.reference.rtol) << ")'\n"
+        << number(r.reference.rtol) << ")";
+  outputs.write(gp, [&](std::ostream& out) {
+    out << "# Run from the output folder: gnuplot " << gp << "\n"
+        << "set terminal pngcairo size 900,600 font 'Sans,10' noenhanced\n"
+        << "set output " << gnuplot_text(png) << "\n"
+        << "set title " << gnuplot_text(title.str()) << "\n"
         << "set logscale xy\nset grid\nset key outside right\n"
         << "set xlabel 'CPU time [s]'\n"
         << "set ylabel 'max position error [m, rad]'\n"
@@ -99,21 +104,24 @@ std::string write_plot(const std::string& prefix, const Model& model, double spe
     // Dark, distinguishable colours (gnuplot's default cycle has a pale yellow).
     static const char* colours[] = {"#1b9e77", "#d95f02", "#7570b3", "#e7298a",
                                     "#66a61e", "#a6761d", "#000000", "#1f78b4"};
+    // Without a finished run gnuplot cannot autoscale ("all points y value
+    // undefined"): fixed ranges make an empty, titled plot instead.
+    if (plotted.empty()) out << "set xrange [1e-3:10]\nset yrange [1e-12:1]\n";
     out << "plot ";
     for (size_t i = 0; i < plotted.size(); ++i)
-      out << (i ? ", \\\n     " : "") << "'" << dat << "' index " << i
+      out << (i ? ", \\\n     " : "") << gnuplot_path(dat) << " index " << i
           << " using 1:2 with linespoints lw 1.5 pt " << (i + 4) << " lc rgb '" << colours[i % 8]
-          << "' title '" << plotted[i] << "'";
+          << "' title " << gnuplot_text(plotted[i]);
     if (plotted.empty()) out << "NaN title 'no finished run'";
     out << "\n";
   });
-  run_gnuplot(gp);
-  return png;
+  outputs.add(png);
+  run_gnuplot(gp, outputs.staging_dir(), {png});
 }
 
-void write_markdown(const std::string& path, const Model& model, double speed_m_per_s, double t_end,
+void write_markdown(std::ostream& out, const Model& model, double speed_m_per_s, double t_end,
                     const WorkPrecisionSettings& s, const WorkPrecisionResult& r) {
-  write_file_atomically(path, [&](std::ostream& out) {
+  {
     const ReferenceSolution& ref = r.reference;
     out << "# Work-precision: " << model.name << " at " << speed_m_per_s << " m/s, "
         << t_end << " s\n\n"
@@ -161,7 +169,7 @@ void write_markdown(const std::string& path, const Model& model, double speed_m_
       }
       out << " |\n";
     }
-  });
+  }
 }
 
 std::vector<IntegratorVariant> selected_variants(const std::vector<std::string>& labels) {
@@ -172,6 +180,7 @@ std::vector<IntegratorVariant> selected_variants(const std::vector<std::string>&
 }
 
 void run_work_precision_command(const WorkPrecisionArgs& args) {
+  if (args.plots) require_gnuplot();
   const PreparedScene scene = prepare_scene(args.scene, args.overrides);
   const Model& model = scene.model;
   const double speed_m_per_s = scene.speed_m_per_s;
@@ -188,14 +197,15 @@ void run_work_precision_command(const WorkPrecisionArgs& args) {
         std::cerr << "  " << line << "\n";
       });
 
-  const std::string prefix = (std::filesystem::path(args.out_dir) / model.name).string();
-  const std::string csv = prefix + "_work_precision.csv";
-  write_csv(csv, r);
-  std::cout << "wrote " << csv << "\n";
-  const std::string md = prefix + "_work_precision.md";
-  write_markdown(md, model, speed_m_per_s, s.t_end_s, s, r);
-  std::cout << "wrote " << md << "\n";
-  if (args.plots) std::cout << "wrote " << write_plot(prefix, model, speed_m_per_s, s.t_end_s, r) << "\n";
+  const std::string stem = file_stem(model.name);
+  OutputSet outputs(args.out_dir);
+  for (const char* suffix : {"_work_precision.dat", "_work_precision.gp", "_work_precision.png"})
+    outputs.replaces(stem + suffix);
+  outputs.write(stem + "_work_precision.csv", [&](std::ostream& out) { write_csv(out, r); });
+  outputs.write(stem + "_work_precision.md",
+                [&](std::ostream& out) { write_markdown(out, model, speed_m_per_s, s.t_end_s, s, r); });
+  if (args.plots) write_plot(outputs, stem, model, speed_m_per_s, s.t_end_s, r);
+  for (const std::string& f : outputs.commit()) std::cout << "wrote " << f << "\n";
 }
 
 }  // namespace
@@ -205,12 +215,15 @@ void register_work_precision_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "work-precision", "compare the integrators: error against CPU time over a range of tolerances");
   cmd->add_option("scene", args->scene, "scene file (TOML)")->required()->check(CLI::ExistingFile);
-  cmd->add_option("--speed", args->overrides.speed_m_per_s, "speed V in m/s (overrides the scene)");
+  cmd->add_option("--speed", args->overrides.speed_m_per_s, "speed V in m/s (overrides the scene)")
+      ->check(finite_in(flag_ranges::speed_m_per_s));
   cmd->add_option("--t-end", args->overrides.t_end_s,
-                  "end time in s (overrides the scene; 5 s keeps the study near a minute)");
+                  "end time in s (overrides the scene; 5 s keeps the study near a minute)")
+      ->check(finite_in(flag_ranges::t_end_s));
   cmd->add_option("--out", args->out_dir, "output directory")->capture_default_str();
   cmd->add_option("--budget", args->budget_s, "CPU seconds per run before giving up")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(finite_in(flag_ranges::cpu_budget_s));
   cmd->add_option("--integrators", args->integrators,
                   "integrators to compare (default: cvode_bdf, cvode_bdf_q2, cvode_adams, "
                   "arkode_erk, arkode_dirk, arkode_imex); _qN caps or sets the order, e.g. "
@@ -219,7 +232,7 @@ void register_work_precision_command(CLI::App& app) {
   cmd->add_option("--rtols", args->rtols,
                   "relative tolerances, loose to tight (default 1e-3,...,1e-8; atol = 1e-3 rtol)")
       ->delimiter(',')
-      ->check(CLI::PositiveNumber);
+      ->check(finite_in(flag_ranges::relative_tolerance));
   cmd->add_flag("!--no-plots", args->plots, "do not run gnuplot");
   cmd->callback([args] { run_work_precision_command(*args); });
 }

@@ -34,7 +34,7 @@ class CvodeStepper final : public Stepper {
   StepOutcome advance(double t_out) override {
     StepOutcome out;
     const int flag = CVode(cvode_.mem, t_out, y_, &out.t_reached, CV_NORMAL);
-    out.flag_name = CVodeGetReturnFlagName(flag);
+    out.flag_name = take_sundials_string(CVodeGetReturnFlagName(flag));
     if (flag == CV_ROOT_RETURN) out.status = StepOutcome::Status::root;
     else if (flag == CV_TOO_MUCH_WORK) out.status = StepOutcome::Status::too_much_work;
     else if (flag < 0) out.status = StepOutcome::Status::failed;

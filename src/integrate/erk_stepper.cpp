@@ -34,7 +34,7 @@ class ErkStepper final : public Stepper {
   StepOutcome advance(double t_out) override {
     StepOutcome out;
     const int flag = ERKStepEvolve(erk_.mem, t_out, y_, &out.t_reached, ARK_NORMAL);
-    out.flag_name = ERKStepGetReturnFlagName(flag);
+    out.flag_name = take_sundials_string(ERKStepGetReturnFlagName(flag));
     if (flag == ARK_ROOT_RETURN) out.status = StepOutcome::Status::root;
     else if (flag == ARK_TOO_MUCH_WORK) out.status = StepOutcome::Status::too_much_work;
     else if (flag < 0) out.status = StepOutcome::Status::failed;

@@ -95,6 +95,30 @@ std::string handle_roots(const Model& model, const RootFunctionSet& roots,
   throw std::runtime_error(msg.str());
 }
 
+// The run length and output interval must be finite and give a bounded
+// number of outputs; before this check, t_end = 1e20 overflowed the output
+// count and the run silently ended after one interval.
+void check_output_count(const IntegrationOptions& o) {
+  const double span = o.t_end_s - o.t_start_s;
+  std::ostringstream msg;
+  msg << "time integration from t = " << o.t_start_s << " s to t_end_s = " << o.t_end_s
+      << " s every output_interval_s = " << o.output_interval_s << " s: ";
+  if (!std::isfinite(o.t_start_s) || !std::isfinite(o.t_end_s) || !(span >= 0.0)) {
+    msg << "expected a finite end time not before the start";
+    throw std::invalid_argument(msg.str());
+  }
+  if (!std::isfinite(o.output_interval_s) || !(o.output_interval_s > 0.0)) {
+    msg << "expected a finite, positive output interval";
+    throw std::invalid_argument(msg.str());
+  }
+  const double outputs = std::ceil(span / o.output_interval_s - 1e-9);
+  if (!(outputs <= o.max_outputs)) {
+    msg << "would keep " << outputs << " output states; at most " << o.max_outputs
+        << " (shorten t_end_s or lengthen output_interval_s)";
+    throw std::invalid_argument(msg.str());
+  }
+}
+
 }  // namespace
 
 IntegrationOptions integration_options_for(const SimulationSpec& simulation) {
@@ -114,6 +138,7 @@ Trajectory integrate(const Model& model, double speed_m_per_s, const Eigen::Vect
     throw std::invalid_argument("time integration: " + integrator_name(options.kind) +
                                 " has no order " + std::to_string(options.order) + " (offers " +
                                 available_orders_text(options.kind) + ")");
+  check_output_count(options);
   const auto wall_start = std::chrono::steady_clock::now();
   const std::clock_t cpu_start = std::clock();
   const RootFunctionSet roots(model, speed_m_per_s);

@@ -57,6 +57,10 @@ struct IntegrationOptions {
   bool stop_on_lift_off = false;
   // Called about once per wall-clock second with the current time.
   std::function<void(double t_s)> progress;
+  // Upper bound on (t_end - t_start) / output_interval: every output state is
+  // kept in memory (Trajectory), so a run asking for more (t_end 1e20,
+  // output_interval 1e-12) stops before it starts, naming both.
+  double max_outputs = 1e6;
 };
 
 struct IntegrationStats {

@@ -4,6 +4,7 @@
 
 #include <sunmatrix/sunmatrix_dense.h>
 
+#include <cstdlib>
 #include <stdexcept>
 
 namespace railstab {
@@ -50,6 +51,13 @@ void check_sundials(int flag, const char* call) {
   if (flag < 0)
     throw std::runtime_error(std::string("SUNDIALS ") + call + " failed, flag " +
                              std::to_string(flag));
+}
+
+std::string take_sundials_string(char* name) {
+  if (name == nullptr) return "unknown SUNDIALS return flag";
+  std::string copy(name);
+  std::free(name);
+  return copy;
 }
 
 }  // namespace railstab

@@ -70,6 +70,10 @@ struct DenseLinearSolver {
   SUNLinearSolver LS = nullptr;
 };
 
+// SUNDIALS' *GetReturnFlagName functions (CVode, ARKStep, ERKStep) return a
+// string malloc'ed per call that the caller must free: copies it and frees it.
+std::string take_sundials_string(char* name);
+
 // Throws std::runtime_error naming the call when a SUNDIALS setup call fails.
 void check_sundials(int flag, const char* call);
 

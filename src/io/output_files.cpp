@@ -1,5 +1,8 @@
 #include "io/output_files.hpp"
 
+#include <functional>
+
+#include "io/csv.hpp"
 #include "model/equations_of_motion.hpp"
 
 #include <algorithm>
@@ -37,50 +40,62 @@ void write_file_atomically(const std::string& path,
   std::filesystem::rename(tmp, target);
 }
 
-void write_trajectory_csv(const std::string& path, const Model& model, double speed_m_per_s,
-                          const Trajectory& traj) {
-  write_file_atomically(path, [&](std::ostream& out) {
-    out << "time_s";
-    for (const Body& b : model.bodies)
-      for (const std::string& c : kCoordinateNames) out << ',' << b.name << '.' << c;
-    out << '\n' << std::setprecision(10);
-    Eigen::MatrixXd q6, qd6;
-    for (size_t i = 0; i < traj.times_s.size(); ++i) {
-      model.full_coordinates(traj.times_s[i], speed_m_per_s, traj.states[i], q6, qd6);
-      out << traj.times_s[i];
-      for (Eigen::Index b = 0; b < q6.cols(); ++b)
-        for (int c = 0; c < 6; ++c) {
-          if (!std::isfinite(q6(c, b))) {
-            std::ostringstream msg;
-            msg << "non-finite " << model.bodies[b].name << '.' << kCoordinateNames[c]
-                << " at t = " << traj.times_s[i] << " s; nothing written to " << path;
-            throw std::runtime_error(msg.str());
-          }
-          out << ',' << q6(c, b);
-        }
-      out << '\n';
-    }
-  });
+std::string trajectory_csv_header(const Model& model) {
+  std::string header = "time_s";
+  for (const Body& b : model.bodies)
+    for (const std::string& c : kCoordinateNames) header += ',' + csv_field(b.name + '.' + c);
+  return header;
 }
 
-void write_absolute_roll_csv(const std::string& path, const Model& model, double speed_m_per_s,
-                             const Trajectory& traj) {
-  write_file_atomically(path, [&](std::ostream& out) {
-    out << "time_s";
-    for (const Body& b : model.bodies) out << ',' << b.name << ".absolute_roll_rad";
-    out << '\n' << std::setprecision(10);
-    Workspace<double> ws(model);
-    for (size_t i = 0; i < traj.times_s.size(); ++i) {
-      const double t = traj.times_s[i];
-      compute_all_body_motions<double>(model, ws, t, speed_m_per_s, traj.states[i]);
-      out << t;
-      for (const BodyMotion<double>& m : ws.motions) {
-        const Eigen::Matrix3d R_WB = m.R_WI * m.R_IB;
-        out << ',' << std::asin(std::clamp(R_WB(2, 1), -1.0, 1.0));
+std::string absolute_roll_csv_header(const Model& model) {
+  std::string header = "time_s";
+  for (const Body& b : model.bodies)
+    header += ',' + csv_field(b.name + ".absolute_roll_rad");
+  return header;
+}
+
+void write_trajectory_csv(std::ostream& out, const Model& model, double speed_m_per_s,
+                          const Trajectory& traj) {
+  out << trajectory_csv_header(model) << '\n' << std::setprecision(10);
+  Eigen::MatrixXd q6, qd6;
+  for (size_t i = 0; i < traj.times_s.size(); ++i) {
+    const double t = traj.times_s[i];
+    model.full_coordinates(t, speed_m_per_s, traj.states[i], q6, qd6);
+    put_csv_number(out, t, [] { return std::string("time_s"); });
+    for (Eigen::Index b = 0; b < q6.cols(); ++b)
+      for (int c = 0; c < 6; ++c) {
+        out << ',';
+        put_csv_number(out, q6(c, b), [&] {
+          std::ostringstream what;
+          what << model.bodies[b].name << '.' << kCoordinateNames[c] << " at t = " << t << " s";
+          return what.str();
+        });
       }
-      out << '\n';
+    out << '\n';
+  }
+}
+
+void write_absolute_roll_csv(std::ostream& out, const Model& model, double speed_m_per_s,
+                             const Trajectory& traj) {
+  out << absolute_roll_csv_header(model) << '\n' << std::setprecision(10);
+  Workspace<double> ws(model);
+  const std::vector<BodyMotion<double>>& motions = ws.motions;
+  for (size_t i = 0; i < traj.times_s.size(); ++i) {
+    const double t = traj.times_s[i];
+    compute_all_body_motions<double>(model, ws, t, speed_m_per_s, traj.states[i]);
+    put_csv_number(out, t, [] { return std::string("time_s"); });
+    for (size_t b = 0; b < motions.size(); ++b) {
+      const Eigen::Matrix3d R_WB = motions[b].R_WI * motions[b].R_IB;
+      const double roll = std::asin(std::clamp(R_WB(2, 1), -1.0, 1.0));
+      out << ',';
+      put_csv_number(out, roll, [&] {
+        std::ostringstream what;
+        what << model.bodies[b].name << ".absolute_roll_rad at t = " << t << " s";
+        return what.str();
+      });
     }
-  });
+    out << '\n';
+  }
 }
 
 }  // namespace railstab

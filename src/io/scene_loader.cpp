@@ -22,6 +22,8 @@
 //   6. public API
 #include "io/scene_loader.hpp"
 
+#include "io/regular_file.hpp"
+
 #include <toml++/toml.h>
 
 #include <algorithm>
@@ -1229,11 +1231,15 @@ SceneSpec parse_scene(const std::string& toml_text, const std::string& source_na
 }
 
 SceneSpec load_scene_file(const std::string& path) {
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throw SceneError(path + ": expected a readable scene file, got none (cannot open it)");
-  std::ostringstream text;
-  text << file.rdbuf();
-  return parse_scene(text.str(), path);
+  // A named pipe, a folder or a device is refused before anything is read
+  // (io/regular_file.hpp): a FIFO used to hang here.
+  std::string text;
+  try {
+    text = read_regular_file(path);
+  } catch (const std::runtime_error& e) {
+    throw SceneError(path + ": scene file: " + e.what());
+  }
+  return parse_scene(text, path);
 }
 
 // Without the file at hand, elements are named by name: after mirroring, an

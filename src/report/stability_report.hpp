@@ -2,6 +2,7 @@
 // Results of the speed analysis as files: eigenvalues over speed (CSV),
 // tracked modes (gnuplot data), root-locus / damping / frequency plots,
 // the critical-speed JSON and the Markdown report that links the plots.
+#include "io/output_set.hpp"
 #include "model/model.hpp"
 #include "stability/speed_analysis.hpp"
 
@@ -10,16 +11,22 @@
 
 namespace railstab {
 
+// File names in the output folder.
 struct StabilityFiles {
   std::string csv, json, markdown;
   std::vector<std::string> plots;
 };
 
-// Writes every file under output_prefix (e.g. "out/thesis_vehicle_tangent").
+// Adds every file, named <stem>_..., to `outputs` (staged; the caller
+// commits): eigenvalue CSV, JSON, Markdown and, with `plots`, the gnuplot
+// data, script and PNGs (gnuplot run and checked; throws GnuplotError).
 // `max_plot_frequency_hz` keeps the stiff contact modes off the plots.
 StabilityFiles write_stability_results(const Model& model, const CriticalSpeedResult& result,
-                                       const std::string& output_prefix,
-                                       const std::string& eigen_solver_name,
+                                       OutputSet& outputs, const std::string& stem,
+                                       const std::string& eigen_solver_name, bool plots = true,
                                        double max_plot_frequency_hz = 20.0);
+
+// Every name write_stability_results may write for `stem`.
+std::vector<std::string> stability_file_names(const std::string& stem);
 
 }  // namespace railstab
