@@ -5,7 +5,10 @@
 
 #include <sunmatrix/sunmatrix_dense.h>
 
+#include <cmath>
 #include <cstdio>
+#include <stdexcept>
+#include <string>
 #include <cstring>
 
 namespace railstab {
@@ -60,11 +63,25 @@ int dense_jacobian(const ModelCallbackData& data, ForceSelection forces, double 
   return jac.allFinite() ? 0 : 1;
 }
 
-Eigen::VectorXd full_rhs(ModelCallbackData& data, double t, N_Vector y) {
-  return rhs(*data.model, data.speed_m_per_s, t, as_eigen(y));
+// The right-hand side into data.xdot_buffer with the callback's workspace
+// (no allocation); a non-finite entry is an error naming its state.
+const Eigen::VectorXd& evaluate(ModelCallbackData& data, ForceSelection forces, double t,
+                                N_Vector y) {
+  const Eigen::Map<const Eigen::VectorXd> x(N_VGetArrayPointer(y), N_VGetLength(y));
+  evaluate_rhs<double>(*data.model, data.workspace, t, data.speed_m_per_s, x, data.xdot_buffer,
+                       nullptr, forces);
+  for (Eigen::Index i = 0; i < data.xdot_buffer.size(); ++i)
+    if (!std::isfinite(data.xdot_buffer(i)))
+      throw std::runtime_error("non-finite derivative of state " +
+                               data.model->state_name(int(i)) + " at t = " + std::to_string(t) +
+                               " s (state value " + std::to_string(x(i)) + ")");
+  return data.xdot_buffer;
 }
-Eigen::VectorXd implicit_rhs(ModelCallbackData& data, double t, N_Vector y) {
-  return implicit_part_rhs(*data.model, data.speed_m_per_s, t, as_eigen(y));
+const Eigen::VectorXd& full_rhs(ModelCallbackData& data, double t, N_Vector y) {
+  return evaluate(data, ForceSelection::all, t, y);
+}
+const Eigen::VectorXd& implicit_rhs(ModelCallbackData& data, double t, N_Vector y) {
+  return evaluate(data, ForceSelection::contact_and_inertia, t, y);
 }
 
 bool same_point(const ModelCallbackData& d, double t, N_Vector y) {
@@ -101,7 +118,7 @@ int implicit_rhs_callback(double t, N_Vector y, N_Vector ydot, void* user) {
 int explicit_rhs_callback(double t, N_Vector y, N_Vector ydot, void* user) {
   auto& data = *static_cast<ModelCallbackData*>(user);
   return guarded(data, [&] {
-    const Eigen::VectorXd f = full_rhs(data, t, y);
+    const Eigen::VectorXd f = full_rhs(data, t, y);  // a copy: implicit_rhs reuses the buffer
     ++data.model_evaluations;
     if (same_point(data, t, y)) {
       as_eigen(ydot) = f - data.cached_fi;

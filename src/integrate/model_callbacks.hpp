@@ -45,6 +45,7 @@ struct ModelCallbackData {
   const RootFunctionSet* roots;
   bool imex_split = false;  // IMEX only: see above
   Workspace<double> workspace;
+  Eigen::VectorXd xdot_buffer;  // sized once: the rhs callbacks do not allocate
   std::string error;                     // first failure inside a callback
   std::string sundials_message;          // SUNDIALS' last error message
   bool budget_exhausted = false;

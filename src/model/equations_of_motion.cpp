@@ -7,7 +7,8 @@ namespace railstab {
 
 template <class T>
 void compute_all_body_motions(const ModelTpl<ParameterScalar<T>>& model, Workspace<T>& ws,
-                              double t_s, double speed_m_per_s, const VecX<T>& x) {
+                              double t_s, double speed_m_per_s,
+                              const Eigen::Ref<const VecX<T>>& x) {
   ws.update_frames(model, t_s, speed_m_per_s);
   const int n = model.n_coordinates;
   for (size_t b = 0; b < model.bodies.size(); ++b) {
@@ -29,7 +30,7 @@ void compute_all_body_motions(const ModelTpl<ParameterScalar<T>>& model, Workspa
 
 template <class T>
 void evaluate_rhs(const ModelTpl<ParameterScalar<T>>& model, Workspace<T>& ws, double t_s,
-                  double speed_m_per_s, const VecX<T>& x, VecX<T>& xdot,
+                  double speed_m_per_s, const Eigen::Ref<const VecX<T>>& x, VecX<T>& xdot,
                   EvaluationDetails* details, ForceSelection forces) {
   const int n = model.n_coordinates;
   const int z0 = model.internal_state_offset();
@@ -44,7 +45,7 @@ void evaluate_rhs(const ModelTpl<ParameterScalar<T>>& model, Workspace<T>& ws, d
     // Force elements, and the rates of their internal states.
     for (size_t i = 0; i < model.elements.size(); ++i) {
       const int first = model.element_first_state[i];
-      const T* z = first >= 0 ? &x(z0 + first) : nullptr;
+      const T* z = first >= 0 ? x.data() + z0 + first : nullptr;
       T* zdot = first >= 0 ? &xdot(z0 + first) : nullptr;
       std::visit(
           [&](const auto& e) {
@@ -105,10 +106,12 @@ Eigen::VectorXd rhs(const Model& model, double speed_m_per_s, double t_s,
 
 #define RAILSTAB_DEFINE_RHS(T)                                                               \
   template void evaluate_rhs<T>(const ModelTpl<ParameterScalar<T>>&, Workspace<T>&, double,  \
-                                double, const VecX<T>&, VecX<T>&, EvaluationDetails*,        \
+                                double, const Eigen::Ref<const VecX<T>>&, VecX<T>&,          \
+                                EvaluationDetails*,                                          \
                                 ForceSelection);                                             \
   template void compute_all_body_motions<T>(const ModelTpl<ParameterScalar<T>>&,             \
-                                            Workspace<T>&, double, double, const VecX<T>&);
+                                            Workspace<T>&, double, double,                   \
+                                            const Eigen::Ref<const VecX<T>>&);
 RAILSTAB_DEFINE_RHS(double)
 RAILSTAB_DEFINE_RHS(AdScalar)
 #undef RAILSTAB_DEFINE_RHS

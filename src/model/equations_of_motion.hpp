@@ -34,7 +34,7 @@ enum class ForceSelection { all, contact_and_inertia };
 
 template <class T>
 void evaluate_rhs(const ModelTpl<ParameterScalar<T>>& model, Workspace<T>& ws, double t_s,
-                  double speed_m_per_s, const VecX<T>& x, VecX<T>& xdot,
+                  double speed_m_per_s, const Eigen::Ref<const VecX<T>>& x, VecX<T>& xdot,
                   EvaluationDetails* details = nullptr,
                   ForceSelection forces = ForceSelection::all);
 
@@ -47,7 +47,8 @@ Eigen::VectorXd rhs(const Model& model, double speed_m_per_s, double t_s,
 // Body motions of every body into ws.motions (for energy, output and tests).
 template <class T>
 void compute_all_body_motions(const ModelTpl<ParameterScalar<T>>& model, Workspace<T>& ws,
-                              double t_s, double speed_m_per_s, const VecX<T>& x);
+                              double t_s, double speed_m_per_s,
+                              const Eigen::Ref<const VecX<T>>& x);
 
 // The two attachments of element e (body 1 may be the track frame of body 2).
 template <class T>
@@ -60,11 +61,12 @@ std::pair<Attachment<T>, Attachment<T>> element_attachments(const ElementEnds& e
 
 #define RAILSTAB_DECLARE_RHS(T)                                                              \
   extern template void evaluate_rhs<T>(const ModelTpl<ParameterScalar<T>>&, Workspace<T>&,   \
-                                       double, double, const VecX<T>&, VecX<T>&,             \
+                                       double, double, const Eigen::Ref<const VecX<T>>&,     \
+                                       VecX<T>&,                                             \
                                        EvaluationDetails*, ForceSelection);                  \
   extern template void compute_all_body_motions<T>(const ModelTpl<ParameterScalar<T>>&,      \
                                                    Workspace<T>&, double, double,            \
-                                                   const VecX<T>&);
+                                                   const Eigen::Ref<const VecX<T>>&);
 RAILSTAB_DECLARE_RHS(double)
 RAILSTAB_DECLARE_RHS(AdScalar)
 #undef RAILSTAB_DECLARE_RHS
