@@ -72,6 +72,12 @@ template <class S> struct BodyTpl {
     return nominal_q(i) + initial_offset(i) + prescribed_rate(i, speed_m_per_s) * t_s;
   }
 
+  // The body's differentiable parameters: f(key, index or -1, value).
+  template <class F> void for_each_parameter(F&& f) {
+    f("mass_kg", -1, mass_kg);
+    for (int i = 0; i < 3; ++i) f("inertia_kg_m2", i, inertia_kg_m2(i));
+  }
+
   template <class S2> BodyTpl<S2> cast() const {
     BodyTpl<S2> b;
     b.name = name;

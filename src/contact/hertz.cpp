@@ -217,6 +217,53 @@ void require_poisson_ratio(double nu, const char* what) {
   }
 }
 
+// K(e) and E(e) at parameter p = e^2 = 1 - k^2 by the arithmetic-geometric
+// mean in T's own arithmetic (Gauss): K = pi / (2 M(1, k)),
+// E = K (1 - sum_n 2^(n-1) c_n^2), c_0^2 = p, c_(n+1) = (a_n - b_n)/2.
+// Slower than the tabulated-derivative path, but every derivative of any
+// order follows exactly: used for the parameter-derivative scalars (Dual),
+// whose mixed second derivatives the chain-rule shortcut would miss.
+template <class T> void elliptic_by_agm(const T& k_squared, const T& p, T& K, T& E) {
+  using std::sqrt;
+  T a = T(1.0), b = sqrt(k_squared);
+  T sum = 0.5 * p;
+  double weight = 0.5;
+  for (int n = 0; n < 60; ++n) {
+    const T c = 0.5 * (a - b);
+    const T a_next = 0.5 * (a + b);
+    b = sqrt(a * b);
+    a = a_next;
+    weight *= 2.0;
+    sum += weight * c * c;
+    // Converged in value; two more rounds let the derivatives settle too.
+    if (std::abs(value_of(c)) < 1e-17 * value_of(a) && n > 2) {
+      if (n > 60) break;
+      for (int extra = 0; extra < 2; ++extra) {
+        const T c2 = 0.5 * (a - b);
+        const T a2 = 0.5 * (a + b);
+        b = sqrt(a * b);
+        a = a2;
+        weight *= 2.0;
+        sum += weight * c2 * c2;
+      }
+      break;
+    }
+  }
+  K = kPi / (2.0 * a);
+  E = K * (1.0 - sum);
+}
+
+// ln rho(x) in T's arithmetic: rho = (E / k^2 - K) / (K - E), x = ln k^2.
+template <class T> T log_curvature_ratio(const T& x) {
+  using std::exp;
+  using std::log;
+  const T k_squared = exp(x);
+  const T p = 1.0 - k_squared;
+  T K, E;
+  elliptic_by_agm(k_squared, p, K, E);
+  return log((E / k_squared - K) / (K - E));
+}
+
 }  // namespace
 
 ElasticPair combine_materials(double young1_Pa, double poisson1, double young2_Pa,
@@ -287,14 +334,27 @@ template <class T> HertzShape<T> hertz_shape(const T& A_per_m, const T& B_per_m,
   // the correction is exactly zero; AdScalar picks up dx = d(ln rho)/slope.
   const double x0 = solve_log_k_squared(value_of(ratio));
   const CurvatureRatioModel at_root = curvature_ratio_model(x0);
-  const T log_k_squared = x0 + (log(ratio) - log(value_of(ratio))) / at_root.slope;
-
-  // K(e), E(e) and k^2 as functions of x (dp/dx = -k^2, dk^2/dx = k^2).
-  const EllipticAtParameter& I = at_root.integrals;
-  const double k2 = at_root.k_squared;
-  const T K = with_chain_rule(I.K, -k2 * I.dK_dp, log_k_squared);
-  const T E = with_chain_rule(I.E, -k2 * I.dE_dp, log_k_squared);
-  const T k_squared = with_chain_rule(k2, k2, log_k_squared);
+  T K, E, k_squared;
+  if constexpr (IsDual<T>::value) {
+    // Parameter-derivative scalars need exact second derivatives: two
+    // chord steps from the double root (each adds one exact order: the
+    // error after n steps is O(eps^(n+1)) in the derivative directions),
+    // then K, E by the AGM in T.
+    using std::exp;
+    T x = T(x0);
+    for (int step = 0; step < 2; ++step)
+      x = x - (log_curvature_ratio(x) - log(ratio)) / at_root.slope;
+    k_squared = exp(x);
+    elliptic_by_agm(k_squared, T(1.0 - k_squared), K, E);
+  } else {
+    const T log_k_squared = x0 + (log(ratio) - log(value_of(ratio))) / at_root.slope;
+    // K(e), E(e) and k^2 as functions of x (dp/dx = -k^2, dk^2/dx = k^2).
+    const EllipticAtParameter& I = at_root.integrals;
+    const double k2 = at_root.k_squared;
+    K = with_chain_rule(I.K, -k2 * I.dK_dp, log_k_squared);
+    E = with_chain_rule(I.E, -k2 * I.dE_dp, log_k_squared);
+    k_squared = with_chain_rule(k2, k2, log_k_squared);
+  }
   const T k = sqrt(k_squared);
 
   const T curvature_sum = A_per_m + B_per_m;  // A + B
@@ -326,6 +386,9 @@ template <class T> HertzShape<T> hertz_shape(const T& A_per_m, const T& B_per_m,
 
 template HertzShape<double> hertz_shape(const double&, const double&, double);
 template HertzShape<AdScalar> hertz_shape(const AdScalar&, const AdScalar&, double);
+template HertzShape<ParamDual> hertz_shape(const ParamDual&, const ParamDual&, double);
+template HertzShape<ParamAdScalar> hertz_shape(const ParamAdScalar&, const ParamAdScalar&,
+                                               double);
 template double elliptic_K(const double&);
 template AdScalar elliptic_K(const AdScalar&);
 template double elliptic_E(const double&);

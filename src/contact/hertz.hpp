@@ -43,6 +43,9 @@ template <class T> T elliptic_E(const T& k);
 
 extern template HertzShape<double> hertz_shape(const double&, const double&, double);
 extern template HertzShape<AdScalar> hertz_shape(const AdScalar&, const AdScalar&, double);
+extern template HertzShape<ParamDual> hertz_shape(const ParamDual&, const ParamDual&, double);
+extern template HertzShape<ParamAdScalar> hertz_shape(const ParamAdScalar&,
+                                                      const ParamAdScalar&, double);
 extern template double elliptic_K(const double&);
 extern template AdScalar elliptic_K(const AdScalar&);
 extern template double elliptic_E(const double&);

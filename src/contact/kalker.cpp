@@ -204,6 +204,13 @@ template <class T> CreepCoefficients<T> kalker_coefficients(const T& a_m, const 
 
 template KalkerTableValues<double> kalker_table(const double&, double);
 template KalkerTableValues<AdScalar> kalker_table(const AdScalar&, double);
+template KalkerTableValues<ParamDual> kalker_table(const ParamDual&, double);
+template KalkerTableValues<ParamAdScalar> kalker_table(const ParamAdScalar&, double);
+template CreepCoefficients<ParamDual> kalker_coefficients(const ParamDual&, const ParamDual&,
+                                                          double, double);
+template CreepCoefficients<ParamAdScalar> kalker_coefficients(const ParamAdScalar&,
+                                                              const ParamAdScalar&, double,
+                                                              double);
 template CreepCoefficients<double> kalker_coefficients(const double&, const double&, double,
                                                        double);
 template CreepCoefficients<AdScalar> kalker_coefficients(const AdScalar&, const AdScalar&,

@@ -29,6 +29,13 @@ template <class T> CreepCoefficients<T> kalker_coefficients(const T& a_m, const 
 
 extern template KalkerTableValues<double> kalker_table(const double&, double);
 extern template KalkerTableValues<AdScalar> kalker_table(const AdScalar&, double);
+extern template KalkerTableValues<ParamDual> kalker_table(const ParamDual&, double);
+extern template KalkerTableValues<ParamAdScalar> kalker_table(const ParamAdScalar&, double);
+extern template CreepCoefficients<ParamDual> kalker_coefficients(const ParamDual&, const ParamDual&,
+                                                          double, double);
+extern template CreepCoefficients<ParamAdScalar> kalker_coefficients(const ParamAdScalar&,
+                                                              const ParamAdScalar&, double,
+                                                              double);
 extern template CreepCoefficients<double> kalker_coefficients(const double&, const double&,
                                                               double, double);
 extern template CreepCoefficients<AdScalar> kalker_coefficients(const AdScalar&,

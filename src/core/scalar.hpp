@@ -9,6 +9,8 @@
 #include <Eigen/Dense>
 #include <unsupported/Eigen/AutoDiff>
 
+#include "core/dual.hpp"
+
 #include <cmath>
 
 namespace railstab {
@@ -17,10 +19,23 @@ inline constexpr int kAdChunk = 16;
 using AdDerivatives = Eigen::Matrix<double, kAdChunk, 1>;
 using AdScalar = Eigen::AutoDiffScalar<AdDerivatives>;
 
+// Parameter sensitivities (linear/parameter_derivative.hpp): one parameter
+// direction on top of the plain value (ParamDual) or of the state AD scalar
+// (ParamAdScalar: d/dp of the state Jacobian).
+using ParamDual = Dual<double>;
+using ParamAdScalar = Dual<AdScalar>;
+
 // The scalar of a model's parameters when the state scalar is T: double for
-// double and AdScalar (derivatives with respect to the state only).
+// double and AdScalar (derivatives with respect to the state only), ParamDual
+// for the two parameter-derivative scalars.
 template <class T> struct ParameterScalarOf {
   using type = double;
+};
+template <> struct ParameterScalarOf<ParamDual> {
+  using type = ParamDual;
+};
+template <> struct ParameterScalarOf<ParamAdScalar> {
+  using type = ParamDual;
 };
 template <class T> using ParameterScalar = typename ParameterScalarOf<T>::type;
 
@@ -30,11 +45,17 @@ template <class T> using VecX = Eigen::Matrix<T, Eigen::Dynamic, 1>;
 
 inline double value_of(double x) { return x; }
 inline double value_of(const AdScalar& x) { return x.value(); }
+template <class U> inline double value_of(const Dual<U>& x) { return value_of(x.v); }
+
+template <class T> struct IsDual : std::false_type {};
+template <class U> struct IsDual<Dual<U>> : std::true_type {};
 
 // Convert a double into scalar T (an AD constant has zero derivatives).
 template <class T> inline T constant(double x) {
   if constexpr (std::is_same_v<T, double>) {
     return x;
+  } else if constexpr (IsDual<T>::value) {
+    return T(x);
   } else {
     return T(x, AdDerivatives::Zero());
   }
@@ -50,8 +71,14 @@ template <class T> inline Vec3<T> to_scalar(const Eigen::Vector3d& v) {
 template <class T, class S> inline T lift(const S& s) {
   if constexpr (std::is_same_v<T, S>) {
     return s;
-  } else {
+  } else if constexpr (std::is_same_v<S, double>) {
     return constant<T>(s);
+  } else if constexpr (std::is_same_v<T, double>) {
+    return value_of(s);  // dropping the parameter derivative (reports, preload values)
+  } else {
+    // ParamDual -> ParamAdScalar: value and parameter derivative, no state derivative.
+    static_assert(std::is_same_v<S, ParamDual> && std::is_same_v<T, ParamAdScalar>);
+    return T(constant<AdScalar>(s.v), constant<AdScalar>(s.d));
   }
 }
 template <class T, class S> inline Vec3<T> lift(const Vec3<S>& v) {

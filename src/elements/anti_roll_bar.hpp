@@ -48,10 +48,14 @@ template <class S> struct AntiRollBar {
     free_vector_left_m = d[0].d;
     free_vector_right_m = d[1].d;
   }
-  Eigen::Vector3d elastic_load(const Attachment<double>& a1, const Attachment<double>& a2) const {
-    return Eigen::Vector3d(value_of(roll_stiffness_N_m_per_rad) * twist(links(a1, a2)), 0, 0);
+  template <class T>
+  Vec3<T> elastic_load(const Attachment<T>& a1, const Attachment<T>& a2) const {
+    return Vec3<T>(lift<T>(roll_stiffness_N_m_per_rad) * twist(links(a1, a2)), T(0), T(0));
   }
-  void set_preload(const Eigen::Vector3d& load) { preload_N_m = lift<S>(load.x()); }
+  void set_preload(const Vec3<S>& load) { preload_N_m = load.x(); }
+  template <class F> void for_each_parameter(F&& f) {
+    f("roll_stiffness_N_m_per_rad", -1, roll_stiffness_N_m_per_rad);
+  }
 
   template <class T>
   void apply(const Attachment<T>& a1, const Attachment<T>& a2, const T*, T*) const {

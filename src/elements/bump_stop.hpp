@@ -35,10 +35,15 @@ template <class S> struct BumpStop {
   void set_nominal(const Attachment<double>& a1, const Attachment<double>& a2) {
     free_vector_m = axis_deflection(a1, ends.point1_m, a2, ends.point2_m).d;
   }
-  Eigen::Vector3d elastic_load(const Attachment<double>&, const Attachment<double>&) const {
-    return Eigen::Vector3d::Zero();
+  template <class T> Vec3<T> elastic_load(const Attachment<T>&, const Attachment<T>&) const {
+    return Vec3<T>::Zero();
   }
-  void set_preload(const Eigen::Vector3d&) {}
+  void set_preload(const Vec3<S>&) {}
+  template <class F> void for_each_parameter(F&& f) {
+    f("clearance_m", -1, clearance_m);
+    f("stiffness_N_per_m", -1, stiffness_N_per_m);
+    f("progressive_stiffness_N_per_m3", -1, progressive_stiffness_N_per_m3);
+  }
 
   template <class T> T ramp(const T& s) const {
     const double w = contact_smoothing_m;

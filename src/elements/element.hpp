@@ -5,7 +5,7 @@
 // its entry here and its reader in io/element_readers.cpp; the compiler
 // then checks that the kind provides everything those visits call:
 //   kType, kInternalStates, ends, set_nominal, elastic_load, set_preload,
-//   apply<T>, potential, internal_state_name, cast<S2>.
+//   apply<T>, potential, internal_state_name, for_each_parameter, cast<S2>.
 #include "elements/anti_roll_bar.hpp"
 #include "elements/bump_stop.hpp"
 #include "elements/line_spring_damper.hpp"

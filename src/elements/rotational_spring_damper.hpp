@@ -25,11 +25,18 @@ template <class S> struct RotationalSpringDamper {
   Vec3<S> preload_N_m = Vec3<S>::Zero();  // solved by the builder
 
   void set_nominal(const Attachment<double>&, const Attachment<double>&) {}
-  Eigen::Vector3d elastic_load(const Attachment<double>& a1, const Attachment<double>& a2) const {
-    const Eigen::Matrix3d R_12 = a1.R_WF.transpose() * a2.R_WF;
-    return value_of_each(stiffness_N_m_per_rad).cwiseProduct(rotation_vector<double>(R_12));
+  template <class T>
+  Vec3<T> elastic_load(const Attachment<T>& a1, const Attachment<T>& a2) const {
+    const Mat3<T> R_12 = a1.R_WF.transpose() * a2.R_WF;
+    return lift<T>(stiffness_N_m_per_rad).cwiseProduct(rotation_vector<T>(R_12));
   }
-  void set_preload(const Eigen::Vector3d& load) { preload_N_m = lift<S>(load); }
+  void set_preload(const Vec3<S>& load) { preload_N_m = load; }
+  template <class F> void for_each_parameter(F&& f) {
+    for (int i = 0; i < 3; ++i) {
+      f("stiffness_N_m_per_rad", i, stiffness_N_m_per_rad(i));
+      f("damping_N_m_s_per_rad", i, damping_N_m_s_per_rad(i));
+    }
+  }
 
   template <class T>
   void apply(const Attachment<T>& a1, const Attachment<T>& a2, const T*, T*) const {

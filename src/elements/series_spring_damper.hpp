@@ -41,10 +41,17 @@ template <class S> struct SeriesSpringDamper {
   void set_nominal(const Attachment<double>& a1, const Attachment<double>& a2) {
     free_length_m = value_of(line_motion(a1, ends.point1_m, a2, ends.point2_m).length_m);
   }
-  Eigen::Vector3d elastic_load(const Attachment<double>&, const Attachment<double>&) const {
-    return Eigen::Vector3d::Zero();
+  template <class T> Vec3<T> elastic_load(const Attachment<T>&, const Attachment<T>&) const {
+    return Vec3<T>::Zero();
   }
-  void set_preload(const Eigen::Vector3d&) {}
+  void set_preload(const Vec3<S>&) {}
+  template <class F> void for_each_parameter(F&& f) {
+    f("series_stiffness_N_per_m", -1, series_stiffness_N_per_m);
+    if (!damper.is_table) {
+      f("damping_N_s_per_m", -1, damper.coefficient);
+      damper_velocity.coefficient = S(1.0) / damper.coefficient;  // keep the inverse consistent
+    }
+  }
 
   template <class T>
   void apply(const Attachment<T>& a1, const Attachment<T>& a2, const T* z, T* zdot) const {

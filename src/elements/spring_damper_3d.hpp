@@ -31,11 +31,18 @@ template <class S> struct SpringDamper3d {
   }
   // The elastic force at a configuration: what becomes the preload when it
   // is the sagged static equilibrium.
-  Eigen::Vector3d elastic_load(const Attachment<double>& a1, const Attachment<double>& a2) const {
-    const Eigen::Vector3d d = axis_deflection(a1, ends.point1_m, a2, ends.point2_m).d;
-    return value_of_each(stiffness_N_per_m).cwiseProduct(d - free_vector_m);
+  template <class T>
+  Vec3<T> elastic_load(const Attachment<T>& a1, const Attachment<T>& a2) const {
+    const Vec3<T> d = axis_deflection(a1, ends.point1_m, a2, ends.point2_m).d;
+    return lift<T>(stiffness_N_per_m).cwiseProduct(d - to_scalar<T>(free_vector_m));
   }
-  void set_preload(const Eigen::Vector3d& load) { preload_N = lift<S>(load); }
+  void set_preload(const Vec3<S>& load) { preload_N = load; }
+  template <class F> void for_each_parameter(F&& f) {
+    for (int i = 0; i < 3; ++i) {
+      f("stiffness_N_per_m", i, stiffness_N_per_m(i));
+      f("damping_N_s_per_m", i, damping_N_s_per_m(i));
+    }
+  }
 
   template <class T>
   Vec3<T> elastic_force_F1(const AxisDeflection<T>& def) const {

@@ -24,12 +24,16 @@ template <class S> struct TractionRod {
   void set_nominal(const Attachment<double>& a1, const Attachment<double>& a2) {
     free_length_m = value_of(line_motion(a1, ends.point1_m, a2, ends.point2_m).length_m);
   }
-  Eigen::Vector3d elastic_load(const Attachment<double>& a1, const Attachment<double>& a2) const {
-    const double e =
-        value_of(line_motion(a1, ends.point1_m, a2, ends.point2_m).length_m) - free_length_m;
-    return Eigen::Vector3d(value_of(stiffness_N_per_m) * e, 0.0, 0.0);
+  template <class T>
+  Vec3<T> elastic_load(const Attachment<T>& a1, const Attachment<T>& a2) const {
+    const T e = line_motion(a1, ends.point1_m, a2, ends.point2_m).length_m - T(free_length_m);
+    return Vec3<T>(lift<T>(stiffness_N_per_m) * e, T(0), T(0));
   }
-  void set_preload(const Eigen::Vector3d& load) { preload_N = lift<S>(load.x()); }
+  void set_preload(const Vec3<S>& load) { preload_N = load.x(); }
+  template <class F> void for_each_parameter(F&& f) {
+    f("stiffness_N_per_m", -1, stiffness_N_per_m);
+    f("damping_N_s_per_m", -1, damping_N_s_per_m);
+  }
 
   template <class T>
   void apply(const Attachment<T>& a1, const Attachment<T>& a2, const T*, T*) const {

@@ -16,17 +16,16 @@ bool is_spin_angle(const Model& model, int k) {
   return model.bodies[b].wheelset() && c == int(CoordinateIndex::pitch);
 }
 
-namespace {
-
-// Indices into x of the unknowns: positions of non-spin coordinates, rates
-// of spin coordinates, internal states.
-std::vector<int> unknown_indices(const Model& model) {
+// Positions of non-spin coordinates, rates of spin coordinates, internal states.
+std::vector<int> equilibrium_unknowns(const Model& model) {
   std::vector<int> idx;
   const int n = model.n_coordinates;
   for (int k = 0; k < n; ++k) idx.push_back(is_spin_angle(model, k) ? n + k : k);
   for (int k = 0; k < model.n_internal_states; ++k) idx.push_back(model.internal_state_offset() + k);
   return idx;
 }
+
+namespace {
 
 // The residual: accelerations and internal-state rates.
 Eigen::VectorXd residual(const Model& model, double speed, double t, const Eigen::VectorXd& x) {
@@ -70,7 +69,7 @@ EquilibriumResult solve_equilibrium(const Model& model, double speed_m_per_s,
   const int n = model.n_coordinates;
   const double t = options.time_s;
   const double V = speed_m_per_s;
-  const std::vector<int> unknowns = unknown_indices(model);
+  const std::vector<int> unknowns = equilibrium_unknowns(model);
   const int m = int(unknowns.size());
   Eigen::VectorXd x = guess;
   // Velocities other than spin rates are zero at an equilibrium.

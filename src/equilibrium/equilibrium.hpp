@@ -13,6 +13,7 @@
 #include <Eigen/Dense>
 
 #include <string>
+#include <vector>
 
 namespace railstab {
 
@@ -46,6 +47,11 @@ Eigen::VectorXd lowered_nominal_state(const Model& model, double speed_m_per_s);
 // The scene's initial state: nominal state plus the bodies' initial offsets
 // and rates (no equilibrium solved: for scenes that start from rest).
 Eigen::VectorXd initial_state(const Model& model, double speed_m_per_s);
+
+// Indices into x of the equilibrium unknowns (positions except spin angles,
+// spin rates, element internal states), in the order of the residual rows
+// rhs(x).tail(state_size - n_coordinates).
+std::vector<int> equilibrium_unknowns(const Model& model);
 
 // True for the state index of a wheelset's spin angle (cyclic).
 bool is_spin_angle(const Model& model, int state);

@@ -114,6 +114,8 @@ Eigen::VectorXd rhs(const Model& model, double speed_m_per_s, double t_s,
                                             const Eigen::Ref<const VecX<T>>&);
 RAILSTAB_DEFINE_RHS(double)
 RAILSTAB_DEFINE_RHS(AdScalar)
+RAILSTAB_DEFINE_RHS(ParamDual)
+RAILSTAB_DEFINE_RHS(ParamAdScalar)
 #undef RAILSTAB_DEFINE_RHS
 
 }  // namespace railstab

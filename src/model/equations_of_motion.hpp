@@ -69,6 +69,8 @@ std::pair<Attachment<T>, Attachment<T>> element_attachments(const ElementEnds& e
                                                    const Eigen::Ref<const VecX<T>>&);
 RAILSTAB_DECLARE_RHS(double)
 RAILSTAB_DECLARE_RHS(AdScalar)
+RAILSTAB_DECLARE_RHS(ParamDual)
+RAILSTAB_DECLARE_RHS(ParamAdScalar)
 #undef RAILSTAB_DECLARE_RHS
 
 }  // namespace railstab

@@ -49,6 +49,7 @@ template <class S> struct ModelTpl {
   std::vector<std::pair<int, int>> element_of_internal_state;
 
   explicit ModelTpl(const TrackSpec& track_spec) : track(track_spec) {}
+  explicit ModelTpl(const Track& built_track) : track(built_track) {}
 
   int state_size() const { return 2 * n_coordinates + n_internal_states; }
   int internal_state_offset() const { return 2 * n_coordinates; }
@@ -96,10 +97,9 @@ template <class S> struct ModelTpl {
   }
 
   template <class S2> ModelTpl<S2> cast() const {
-    ModelTpl<S2> m(TrackSpec{});
+    ModelTpl<S2> m(track);
     m.name = name;
     m.source_path = source_path;
-    m.track = track;
     m.scene_speed_m_per_s = scene_speed_m_per_s;
     m.gravity_m_per_s2 = gravity_m_per_s2;
     m.reference_arc_length_m = reference_arc_length_m;

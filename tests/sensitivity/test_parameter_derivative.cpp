@@ -1,0 +1,120 @@
+// Parameters as AD variables: the exact derivative of the state matrix with
+// respect to a scene parameter (equilibrium shift and preloads included)
+// against central differences of the whole pipeline (scene -> preloads ->
+// equilibrium -> linearisation -> eigenvalues), on the thesis vehicle at
+// 100 m/s for three parameters of different kinds: a secondary lateral
+// damping (enters A directly), a primary longitudinal stiffness (moves the
+// hunting mode most) and the car-body mass (moves the preloads and the
+// equilibrium: the implicit-function terms).
+#include "eigen/eigen_analysis.hpp"
+#include "equilibrium/equilibrium.hpp"
+#include "io/scene_loader.hpp"
+#include "linear/linearization.hpp"
+#include "sensitivity/parameter_derivative.hpp"
+#include "setup/build_model.hpp"
+#include "stability/modes.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <complex>
+
+using namespace railstab;
+
+namespace {
+
+const double kSpeed = 100.0;
+
+SceneSpec vehicle() {
+  return load_scene_file(std::string(RAILSTAB_CASES_DIR) + "/thesis_vehicle_tangent.toml");
+}
+
+LinearModel linear_model(const SceneSpec& scene) {
+  SceneSpec s = scene;
+  s.speed_m_per_s = kSpeed;
+  const Model model = build_model(s);
+  EquilibriumOptions eq;
+  eq.acceleration_tolerance = 1e-9;
+  const Eigen::VectorXd x = solve_equilibrium(model, kSpeed, lowered_nominal_state(model, kSpeed), eq).state;
+  return linearize(model, kSpeed, x);
+}
+
+// The least stable lateral mode below 20 Hz (hunting, 4.2 Hz near the
+// critical speed) and its right eigenvector.
+EigenPair hunting_pair(const Model& model, const LinearModel& lin) {
+  const std::vector<EigenPair> pairs = eigen_dense(lin.A);
+  const std::vector<ModeReport> modes = describe_modes(model, lin, pairs);
+  const int i = least_stable_lateral_mode(modes, 20.0);
+  EXPECT_GE(i, 0);
+  return pairs[size_t(std::max(i, 0))];
+}
+
+std::complex<double> nearest(const Eigen::MatrixXd& A, std::complex<double> target) {
+  const std::vector<EigenPair> pairs = eigen_dense(A);
+  std::complex<double> best = pairs.front().value;
+  for (const EigenPair& p : pairs)
+    if (std::abs(p.value - target) < std::abs(best - target)) best = p.value;
+  return best;
+}
+
+}  // namespace
+
+class ParameterDerivative : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(ParameterDerivative, StateMatrixAndEigenvalueAgreeWithCentralDifferences) {
+  const SceneSpec scene = vehicle();
+  const std::string key = GetParam();
+  const StateMatrixDerivative d = state_matrix_derivative(scene, kSpeed, key);
+  const double p = d.parameter_value;
+  ASSERT_GT(p, 0.0);
+
+  // Central differences of the whole pipeline, step 1e-3 p: truncation
+  // ~1e-6 relative; the equilibria (residual 1e-9) add noise ~1e-9 / 1e-3
+  // relative to the change of A, which for a weak parameter (the primary
+  // longitudinal stiffness moves the lateral mode by 1e-4 per unit of
+  // relative change) sets the tolerances below.
+  const double h = 1e-3 * p;
+  const LinearModel plus = linear_model(with_parameter(scene, key, p + h));
+  const LinearModel minus = linear_model(with_parameter(scene, key, p - h));
+  ASSERT_EQ(plus.A.rows(), d.linear.A.rows());
+  const Eigen::MatrixXd dA_fd = (plus.A - minus.A) / (2.0 * h);
+  const double scale = d.A_derivative.cwiseAbs().maxCoeff();
+  ASSERT_GT(scale, 0.0);
+  EXPECT_LT((d.A_derivative - dA_fd).cwiseAbs().maxCoeff(), 1e-5 * scale) << key;
+
+  // The hunting eigenvalue's derivative, (w^H dA v)/(w^H v).
+  SceneSpec at_speed = scene;
+  at_speed.speed_m_per_s = kSpeed;
+  const EigenPair hunting = hunting_pair(build_model(at_speed), d.linear);
+  const std::complex<double> dl =
+      eigenvalue_derivative(d.linear.A, d.A_derivative, hunting.value, hunting.vector);
+  const std::complex<double> dl_fd =
+      (nearest(plus.A, hunting.value) - nearest(minus.A, hunting.value)) / (2.0 * h);
+  std::printf("  %s = %g: d(lambda)/dp AD %.9g%+.9gi, central %.9g%+.9gi (lambda %.6g%+.6gi)\n",
+              key.c_str(), p, dl.real(), dl.imag(), dl_fd.real(), dl_fd.imag(),
+              hunting.value.real(), hunting.value.imag());
+  EXPECT_GT(std::abs(dl) * p, 1e-6);  // the parameter matters for hunting
+  EXPECT_LT(std::abs(dl - dl_fd), 2e-4 * std::abs(dl_fd)) << key;
+}
+
+INSTANTIATE_TEST_SUITE_P(ThesisVehicle, ParameterDerivative,
+                         ::testing::Values("elements.secondary_bogie1.damping_N_s_per_m[1]",
+                                           "elements.primary_ws1.stiffness_N_per_m[0]",
+                                           "bodies.carbody.mass_kg"));
+
+TEST(ParameterDerivativeKeys, UnknownKeyIsNamedWithTheKeysThatExist) {
+  const SceneSpec scene = vehicle();
+  try {
+    state_matrix_derivative(scene, kSpeed, "elements.primary_ws9.stiffness_N_per_m[0]");
+    FAIL() << "no error";
+  } catch (const std::invalid_argument& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("elements.primary_ws9.stiffness_N_per_m[0]"), std::string::npos) << m;
+    EXPECT_NE(m.find("elements.primary_ws1.stiffness_N_per_m[0]"), std::string::npos) << m;
+    EXPECT_NE(m.find("bodies.carbody.mass_kg"), std::string::npos) << m;
+  }
+  // Mirrored pairs are one scene entry: listed once, by the scene name.
+  const std::vector<std::string> keys = parameter_keys(scene);
+  EXPECT_EQ(std::count(keys.begin(), keys.end(), "elements.secondary_bogie2.damping_N_s_per_m[1]"), 1);
+  EXPECT_EQ(std::count(keys.begin(), keys.end(), "elements.secondary_bogie2_left.damping_N_s_per_m[1]"), 0);
+}
