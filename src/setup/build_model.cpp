@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
+#include <variant>
 
 namespace railstab {
 
@@ -19,20 +21,40 @@ SceneSpec straight_twin(const SceneSpec& spec) {
   return twin;
 }
 
+// Elements whose force is set by an internal state that relaxes to zero
+// force at rest (a damper in series with a spring: dz/dt = 0 <=> F = 0)
+// carry nothing at any equilibrium, so the sag is the same without them.
+// They are left out of the sag solve: with a stiff series spring
+// (k_s ~ 1e9 N/m) the quadratic change of their length with the 0.1-0.2 m
+// sag of a soft secondary suspension makes the Newton solve crawl (hundreds
+// of damped iterations) for nothing.
+bool relaxes_to_zero_force(const ElementSpec& element) {
+  return std::visit([](const auto& e) { return std::decay_t<decltype(e)>::kInternalStates > 0; },
+                    element);
+}
+
 std::vector<Eigen::Vector3d> solve_gravity_preloads(const SceneSpec& scene) {
-  const Model twin = assemble_model(straight_twin(scene));
+  SceneSpec twin_spec = straight_twin(scene);
+  std::vector<size_t> kept;  // scene element index of each twin element
+  twin_spec.elements.clear();
+  for (size_t i = 0; i < scene.elements.size(); ++i)
+    if (!relaxes_to_zero_force(scene.elements[i])) {
+      kept.push_back(i);
+      twin_spec.elements.push_back(scene.elements[i]);
+    }
+  const Model twin = assemble_model(twin_spec);
   const double V = scene.speed_m_per_s;
   const EquilibriumResult sagged = solve_equilibrium(twin, V, lowered_nominal_state(twin, V));
   Workspace<double> ws(twin);
   compute_all_body_motions<double>(twin, ws, 0.0, V, sagged.state);
-  std::vector<Eigen::Vector3d> preloads;
-  for (const auto& element : twin.elements)
-    preloads.push_back(std::visit(
+  std::vector<Eigen::Vector3d> preloads(scene.elements.size(), Eigen::Vector3d::Zero());
+  for (size_t j = 0; j < twin.elements.size(); ++j)
+    preloads[kept[j]] = std::visit(
         [&](const auto& e) {
           const auto [a1, a2] = element_attachments(e.ends, ws);
           return e.elastic_load(a1, a2);
         },
-        element));
+        twin.elements[j]);
   return preloads;
 }
 

@@ -8,8 +8,9 @@
 // straight, level track at the scene's speed (the "straight twin": gravity
 // only, no curving or cant forces), so the nominal configuration is that
 // twin's equilibrium. Elements without a preload (bump stops, series
-// spring-dampers: nothing static passes through them) take part in the sag
-// but keep none.
+// spring-dampers: nothing static passes through them) keep none; series
+// spring-dampers (force zero at every equilibrium) are left out of the sag
+// solve, bump stops take part in it.
 #include "model/model.hpp"
 #include "scene/scene_spec.hpp"
 

@@ -487,7 +487,8 @@ TEST(SceneLoader, EveryCaseFileLoadsWithTheExpectedBodyCount) {
       {"extreme_high_speed.toml", 3},     {"extreme_tight_curve.toml", 3},
       {"extreme_cant_deficiency.toml", 3}, {"extreme_cant_excess.toml", 3},
       {"extreme_zero_damping.toml", 3},   {"extreme_lift_off.toml", 3},
-      {"extreme_near_critical.toml", 3},  {"extreme_conservative.toml", 3}};
+      {"extreme_near_critical.toml", 3},  {"extreme_conservative.toml", 3},
+      {"coach_tangent.toml", 7},          {"coach_curve.toml", 7}};
   size_t files_seen = 0;
   for (const auto& entry : std::filesystem::directory_iterator(RAILSTAB_CASES_DIR)) {
     if (entry.path().extension() != ".toml") continue;
