@@ -1,7 +1,7 @@
 # CTest install_and_find_package: `cmake --install` the build into PREFIX,
 # then configure and build the examples/ project against it with
-# find_package(railstab), as a user of the library would. Fails on the first
-# step that fails, with its output.
+# find_package(railstab), as a user of the library would, and run it on
+# SCENE (optional). Fails on the first step that fails, with its output.
 foreach(var BUILD_DIR PREFIX CONSUMER_BUILD CONSUMER_SOURCE CXX_COMPILER)
   if(NOT DEFINED ${var})
     message(FATAL_ERROR "install_consumer_test.cmake: -D${var}=... missing")
@@ -31,3 +31,13 @@ run_step("configure consumer" ${CMAKE_COMMAND} -S ${CONSUMER_SOURCE} -B ${CONSUM
          -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${PREFIX}
          -DCMAKE_CXX_COMPILER=${CXX_COMPILER})
 run_step("build consumer" ${CMAKE_COMMAND} --build ${CONSUMER_BUILD} -j1)
+# The program built against the installed package runs and finds the thesis
+# vehicle's critical speed (README: 111.46 m/s).
+if(DEFINED SCENE)
+  execute_process(COMMAND ${CONSUMER_BUILD}/critical_speed ${SCENE}
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "critical speed 111\\.46 m/s")
+    message(FATAL_ERROR "installed critical_speed: exit ${rc}\n${out}\n${err}")
+  endif()
+  message(STATUS "run consumer: ${out}")
+endif()
