@@ -39,19 +39,17 @@ std::vector<std::string> work_precision_plot_file_names(const std::string& stem)
 }
 
 void write_work_precision_csv(std::ostream& out, const WorkPrecisionResult& r) {
-  {
-    out << "integrator,rtol,atol,error,cpu_seconds,steps,rhs_evaluations,jacobians,status,"
-           "wall_seconds,error_coordinate,lateral_error\n";
-    for (const WorkPrecisionRun& run : r.runs) {
-      const bool done = std::isfinite(run.error);
-      out << csv_field(run.label) << ',' << required_number(run.rtol, run.label + " rtol") << ','
-          << required_number(run.atol, run.label + " atol") << ','
-          << number(run.error) << ',' << (done ? number(run.cpu_seconds) : "") << ','
-          << run.stats.steps << ',' << run.stats.rhs_evaluations << ','
-          << run.stats.jacobian_evaluations << ',' << csv_field(run.status) << ','
-          << (done ? number(run.wall_seconds) : "") << ',' << csv_field(run.error_coordinate) << ','
-          << number(run.lateral_error) << '\n';
-    }
+  out << "integrator,rtol,atol,error,cpu_seconds,steps,rhs_evaluations,jacobians,status,"
+         "wall_seconds,error_coordinate,lateral_error\n";
+  for (const WorkPrecisionRun& run : r.runs) {
+    const bool done = std::isfinite(run.error);
+    out << csv_field(run.label) << ',' << required_number(run.rtol, run.label + " rtol") << ','
+        << required_number(run.atol, run.label + " atol") << ','
+        << number(run.error) << ',' << (done ? number(run.cpu_seconds) : "") << ','
+        << run.stats.steps << ',' << run.stats.rhs_evaluations << ','
+        << run.stats.jacobian_evaluations << ',' << csv_field(run.status) << ','
+        << (done ? number(run.wall_seconds) : "") << ',' << csv_field(run.error_coordinate) << ','
+        << number(run.lateral_error) << '\n';
   }
 }
 
@@ -111,54 +109,52 @@ void write_work_precision_plot(OutputSet& outputs, const std::string& stem, cons
 void write_work_precision_markdown(std::ostream& out, const Model& model, double speed_m_per_s,
                                    const WorkPrecisionSettings& s, const WorkPrecisionResult& r) {
   const double t_end = s.t_end_s;
-  {
-    const ReferenceSolution& ref = r.reference;
-    out << "# Work-precision: " << model.name << " at " << speed_m_per_s << " m/s, "
-        << t_end << " s\n\n"
-        << "- Error: max over the output times (every " << s.output_interval_s
-        << " s) and the body coordinates of |x - x_ref|, positions only (m, rad), wheelset spin "
-           "angles excluded.\n"
-        << "- Lateral error: the same over the lateral shifts and yaw angles only (the hunting "
-           "motion).\n"
-        << "- Work: process CPU seconds (std::clock) of the integration.\n"
-        << "- Tolerances: atol = rtol x " << s.absolute_tolerance_scale << " on every state.\n"
-        << "- Reference: " << integrator_name(ref.kind) << " at rtol " << number(ref.rtol)
-        << ", atol " << number(ref.atol) << " (CPU " << number(ref.cpu_seconds) << " s); "
-        << integrator_name(ref.check_kind) << " at rtol " << number(ref.check_rtol)
-        << " differs from it by " << number(ref.check_difference)
-        << ", an upper estimate of the reference's error. Errors below about that are not "
-           "resolved.\n"
-        << "- A run over " << s.cpu_budget_per_run_s
-        << " CPU s is abandoned (\"gave up\"); tighter tolerances of that integrator are then "
-           "skipped.\n\n";
-    out << "| integrator | rtol | atol | error | (where) | lateral error | CPU s | steps | rhs | "
-           "Jacobians | status |\n"
-        << "|---|---|---|---|---|---|---|---|---|---|---|\n";
-    for (const WorkPrecisionRun& run : r.runs) {
-      const bool done = std::isfinite(run.error);
-      out << "| " << run.label << " | " << number(run.rtol) << " | " << number(run.atol) << " | "
-          << (done ? number(run.error) : "-") << " | " << run.error_coordinate << " | "
-          << (done ? number(run.lateral_error) : "-") << " | "
-          << (done ? number(run.cpu_seconds) : "-")
-          << " | " << run.stats.steps << " | " << run.stats.rhs_evaluations << " | "
-          << run.stats.jacobian_evaluations << " | " << run.status << " |\n";
+  const ReferenceSolution& ref = r.reference;
+  out << "# Work-precision: " << model.name << " at " << speed_m_per_s << " m/s, "
+      << t_end << " s\n\n"
+      << "- Error: max over the output times (every " << s.output_interval_s
+      << " s) and the body coordinates of |x - x_ref|, positions only (m, rad), wheelset spin "
+         "angles excluded.\n"
+      << "- Lateral error: the same over the lateral shifts and yaw angles only (the hunting "
+         "motion).\n"
+      << "- Work: process CPU seconds (std::clock) of the integration.\n"
+      << "- Tolerances: atol = rtol x " << s.absolute_tolerance_scale << " on every state.\n"
+      << "- Reference: " << integrator_name(ref.kind) << " at rtol " << number(ref.rtol)
+      << ", atol " << number(ref.atol) << " (CPU " << number(ref.cpu_seconds) << " s); "
+      << integrator_name(ref.check_kind) << " at rtol " << number(ref.check_rtol)
+      << " differs from it by " << number(ref.check_difference)
+      << ", an upper estimate of the reference's error. Errors below about that are not "
+         "resolved.\n"
+      << "- A run over " << s.cpu_budget_per_run_s
+      << " CPU s is abandoned (\"gave up\"); tighter tolerances of that integrator are then "
+         "skipped.\n\n";
+  out << "| integrator | rtol | atol | error | (where) | lateral error | CPU s | steps | rhs | "
+         "Jacobians | status |\n"
+      << "|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const WorkPrecisionRun& run : r.runs) {
+    const bool done = std::isfinite(run.error);
+    out << "| " << run.label << " | " << number(run.rtol) << " | " << number(run.atol) << " | "
+        << (done ? number(run.error) : "-") << " | " << run.error_coordinate << " | "
+        << (done ? number(run.lateral_error) : "-") << " | "
+        << (done ? number(run.cpu_seconds) : "-")
+        << " | " << run.stats.steps << " | " << run.stats.rhs_evaluations << " | "
+        << run.stats.jacobian_evaluations << " | " << run.status << " |\n";
+  }
+  out << "\nCheapest run reaching an error bound, per integrator:\n\n"
+      << "| integrator | error <= 1e-4: rtol, CPU s | error <= 1e-6: rtol, CPU s |\n"
+      << "|---|---|---|\n";
+  for (const std::string& label : labels_in_order(r)) {
+    out << "| " << label;
+    for (double bound : {1e-4, 1e-6}) {
+      const WorkPrecisionRun* best = nullptr;
+      for (const WorkPrecisionRun& run : r.runs)
+        if (run.label == label && run.status == "ok" && run.error <= bound &&
+            (!best || run.cpu_seconds < best->cpu_seconds))
+          best = &run;
+      out << " | "
+          << (best ? number(best->rtol) + ", " + number(best->cpu_seconds) : std::string("-"));
     }
-    out << "\nCheapest run reaching an error bound, per integrator:\n\n"
-        << "| integrator | error <= 1e-4: rtol, CPU s | error <= 1e-6: rtol, CPU s |\n"
-        << "|---|---|---|\n";
-    for (const std::string& label : labels_in_order(r)) {
-      out << "| " << label;
-      for (double bound : {1e-4, 1e-6}) {
-        const WorkPrecisionRun* best = nullptr;
-        for (const WorkPrecisionRun& run : r.runs)
-          if (run.label == label && run.status == "ok" && run.error <= bound &&
-              (!best || run.cpu_seconds < best->cpu_seconds))
-            best = &run;
-        out << " | "
-            << (best ? number(best->rtol) + ", " + number(best->cpu_seconds) : std::string("-"));
-      }
-      out << " |\n";
-    }
+    out << " |\n";
   }
 }
 
