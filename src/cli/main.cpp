@@ -1,5 +1,6 @@
 // railstab: lateral stability of railway vehicles. Subcommands live in
 // src/cli/*_command.cpp; this file only wires them and reports errors.
+#include "cli/check_command.hpp"
 #include "cli/contact_geometry_command.hpp"
 #include "cli/simulate_command.hpp"
 #include "cli/stability_commands.hpp"
@@ -19,6 +20,7 @@ int main(int argc, char** argv) {
   railstab::register_verify_command(app);
   railstab::register_work_precision_command(app);
   railstab::register_contact_geometry_command(app);
+  railstab::register_check_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

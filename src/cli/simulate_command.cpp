@@ -1,5 +1,6 @@
 #include "cli/simulate_command.hpp"
 
+#include "cli/model_warnings.hpp"
 #include "cli/numeric_flags.hpp"
 #include "setup/prepare_scene.hpp"
 #include "integrate/error_estimate.hpp"
@@ -108,6 +109,7 @@ std::string run_json(const Model& model, double speed_m_per_s, const Integration
 void run_simulate(const SimulateArgs& args) {
   if (args.plots) require_gnuplot();  // before the run, not after it
   PreparedScene scene = prepare_scene(args.scene, args.overrides);
+  print_model_warnings_to_stderr(scene);
   const Model& model = scene.model;
   std::cerr << "scene " << model.name << ": " << model.bodies.size() << " bodies, "
             << model.state_size() << " states, speed " << scene.speed_m_per_s << " m/s\n"

@@ -320,4 +320,39 @@ StabilityFiles write_stability_results(const Model& model, const CriticalSpeedRe
   return files;
 }
 
+void print_critical_speed_summary(std::ostream& out, const Model& model,
+                                  const CriticalSpeedResult& r, double hunting_band_hz) {
+  out << std::setprecision(6);
+  if (r.unstable_at_start) {
+    out << model.name << ": already unstable at " << r.from_m_per_s << " m/s\n";
+  } else if (!r.critical_speed_found) {
+    const double top = r.grid.back().speed_m_per_s;
+    out << model.name << ": stable over the whole range analysed " << r.from_m_per_s << " - "
+        << top << " m/s\n";
+  } else {
+    const ModeReport& m = r.at_critical.modes[r.at_critical.least_stable];
+    out << model.name << ": critical speed " << std::fixed << std::setprecision(2)
+        << r.critical_speed_m_per_s << " m/s (" << r.critical_speed_m_per_s * 3.6 << " km/h)"
+        << std::defaultfloat << std::setprecision(5) << ", frequency " << m.frequency_hz
+        << " Hz, mode " << m.name << "\n";
+  }
+  if (r.equilibrium_lost_at_m_per_s > 0.0)
+    out << "no steady state from " << r.equilibrium_lost_at_m_per_s
+        << " m/s: " << r.equilibrium_error << "\n";
+  for (const StabilityPoint& p : r.grid)
+    if (!p.validity_warning.empty()) {
+      out << "warning from " << p.speed_m_per_s << " m/s: " << p.validity_warning << "\n";
+      break;
+    }
+  for (const StabilityPoint& p : r.grid)
+    if (!p.unstable_above_band.empty()) {
+      const ModeReport& m = p.modes[p.unstable_above_band.front()];
+      out << "warning from " << p.speed_m_per_s << " m/s: mode above the hunting band ("
+          << hunting_band_hz << " Hz) unstable: " << m.name << " at " << m.frequency_hz
+          << " Hz, real part " << m.eigenvalue.real() << " 1/s\n";
+      break;
+    }
+  out << r.evaluations << " speed evaluations in " << r.seconds << " s\n";
+}
+
 }  // namespace railstab

@@ -6,6 +6,7 @@
 #include "model/model.hpp"
 #include "stability/speed_analysis.hpp"
 
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,13 @@ StabilityFiles write_stability_results(const Model& model, const CriticalSpeedRe
                                        OutputSet& outputs, const std::string& stem,
                                        const std::string& eigen_solver_name, bool plots = true,
                                        double max_plot_frequency_hz = 20.0);
+
+// The outcome for the terminal: the critical speed (or stable / unstable
+// over the range), where the steady state was lost, the first validity
+// warning, the first unstable mode above the hunting band
+// (`hunting_band_hz`), the number of speed evaluations and their time.
+void print_critical_speed_summary(std::ostream& out, const Model& model,
+                                  const CriticalSpeedResult& r, double hunting_band_hz);
 
 // Every name write_stability_results may write for `stem`.
 std::vector<std::string> stability_file_names(const std::string& stem);

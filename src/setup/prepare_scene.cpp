@@ -4,14 +4,18 @@
 
 namespace railstab {
 
-PreparedScene prepare_scene(const std::string& path, const SceneOverrides& overrides) {
+SceneSpec load_scene_with_overrides(const std::string& path, const SceneOverrides& overrides) {
   SceneSpec spec = load_scene_file(path);
   if (overrides.speed_m_per_s) spec.speed_m_per_s = *overrides.speed_m_per_s;
   if (overrides.t_end_s) spec.simulation.t_end_s = *overrides.t_end_s;
   if (overrides.reference_arc_length_m)
     spec.reference_arc_length_m = *overrides.reference_arc_length_m;
   validate_scene(spec);
-  return prepare_scene(std::move(spec));
+  return spec;
+}
+
+PreparedScene prepare_scene(const std::string& path, const SceneOverrides& overrides) {
+  return prepare_scene(load_scene_with_overrides(path, overrides));
 }
 
 PreparedScene prepare_scene(SceneSpec spec) {

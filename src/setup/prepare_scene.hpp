@@ -28,6 +28,8 @@ struct PreparedScene {
 };
 
 PreparedScene prepare_scene(const std::string& path, const SceneOverrides& overrides);
+// The first step alone: the scene file read, the overrides applied, validated.
+SceneSpec load_scene_with_overrides(const std::string& path, const SceneOverrides& overrides);
 // The same from a scene already read (overrides applied by the caller).
 PreparedScene prepare_scene(SceneSpec spec);
 

@@ -1,0 +1,43 @@
+# CTest install_and_find_package: `cmake --install` the build into PREFIX,
+# then configure and build the examples/ project against it with
+# find_package(railstab), as a user of the library would, and run it on
+# SCENE (optional). Fails on the first step that fails, with its output.
+foreach(var BUILD_DIR PREFIX CONSUMER_BUILD CONSUMER_SOURCE CXX_COMPILER)
+  if(NOT DEFINED ${var})
+    message(FATAL_ERROR "install_consumer_test.cmake: -D${var}=... missing")
+  endif()
+endforeach()
+file(REMOVE_RECURSE ${PREFIX} ${CONSUMER_BUILD})
+
+function(run_step name)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "${name} failed (${rc}):\n${out}\n${err}")
+  endif()
+  message(STATUS "${name}: ok")
+endfunction()
+
+run_step("install" ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${PREFIX})
+foreach(f include/railstab/setup/prepare_scene.hpp lib/cmake/railstab/railstabConfig.cmake
+          lib/cmake/railstab/railstabTargets.cmake)
+  if(NOT EXISTS ${PREFIX}/${f})
+    message(FATAL_ERROR "install: ${PREFIX}/${f} missing")
+  endif()
+endforeach()
+if(EXISTS ${PREFIX}/include/railstab/cli)
+  message(FATAL_ERROR "install: the CLI headers (CLI11) must not be installed")
+endif()
+run_step("configure consumer" ${CMAKE_COMMAND} -S ${CONSUMER_SOURCE} -B ${CONSUMER_BUILD}
+         -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${PREFIX}
+         -DCMAKE_CXX_COMPILER=${CXX_COMPILER})
+run_step("build consumer" ${CMAKE_COMMAND} --build ${CONSUMER_BUILD} -j1)
+# The program built against the installed package runs and finds the thesis
+# vehicle's critical speed (README: 111.46 m/s).
+if(DEFINED SCENE)
+  execute_process(COMMAND ${CONSUMER_BUILD}/critical_speed ${SCENE}
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "critical speed 111\\.46 m/s")
+    message(FATAL_ERROR "installed critical_speed: exit ${rc}\n${out}\n${err}")
+  endif()
+  message(STATUS "run consumer: ${out}")
+endif()

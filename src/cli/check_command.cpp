@@ -1,0 +1,66 @@
+#include "cli/check_command.hpp"
+
+#include "check/model_check.hpp"
+#include "cli/numeric_flags.hpp"
+#include "io/file_names.hpp"
+#include "io/output_set.hpp"
+#include "report/model_check_report.hpp"
+#include "setup/prepare_scene.hpp"
+
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+
+namespace railstab {
+
+namespace {
+
+struct CheckArgs {
+  std::string scene;
+  SceneOverrides overrides;
+  std::string out_dir = "out";
+  bool natural_frequencies = true;
+};
+
+void run_check(const CheckArgs& a) {
+  const SceneSpec spec = load_scene_with_overrides(a.scene, a.overrides);
+  ModelCheckOptions options;
+  options.natural_frequencies = a.natural_frequencies;
+  const ModelCheckReport r = check_scene(spec, options);
+  const std::string stem = file_stem(r.scene) + "_check";
+  OutputSet outputs(a.out_dir);
+  outputs.write(stem + ".md", [&](std::ostream& out) { write_model_check_markdown(out, r); });
+  outputs.write(stem + ".json", [&](std::ostream& out) { write_model_check_json(out, r); });
+  const std::vector<std::string> written = outputs.commit();
+  print_model_check_summary(std::cout, r);
+  for (const std::string& f : written) std::cout << "wrote " << f << "\n";
+  if (!r.errors.empty()) {
+    std::ostringstream msg;
+    msg << "model check of " << r.scene << ": " << r.errors.size()
+        << " error(s) (listed above and in the report)";
+    throw std::runtime_error(msg.str());
+  }
+}
+
+}  // namespace
+
+void register_check_command(CLI::App& app) {
+  auto a = std::make_shared<CheckArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "check", "model checks before a run: masses, axle loads, static deflections, natural "
+               "frequencies at rest, warnings for the usual input mistakes");
+  cmd->add_option("scene", a->scene, "scene file (TOML)")->required()->check(CLI::ExistingFile);
+  cmd->add_option("--speed", a->overrides.speed_m_per_s,
+                  "speed V in m/s of the equilibrium the axle loads are taken at")
+      ->check(finite_in(flag_ranges::speed_m_per_s));
+  cmd->add_option("--arc-length", a->overrides.reference_arc_length_m,
+                  "arc length (m) of the reference point at t = 0")
+      ->check(finite_in(flag_ranges::arc_length_m));
+  cmd->add_option("--out", a->out_dir, "output directory")->capture_default_str();
+  cmd->add_flag("!--no-frequencies", a->natural_frequencies,
+                "skip the natural frequencies at rest (one equilibrium and eigen-analysis less)");
+  cmd->callback([a] { run_check(*a); });
+}
+
+}  // namespace railstab
