@@ -23,6 +23,7 @@ namespace railstab {
 template <class S> struct AntiRollBar {
   static constexpr const char* kType = "anti_roll_bar";
   static constexpr int kInternalStates = 0;
+  static constexpr bool kInGravitySag = true;
   ElementEnds ends;
   S roll_stiffness_N_m_per_rad = S(0);
   double link_half_spacing_m = 1.0;  // a

@@ -24,6 +24,7 @@ namespace railstab {
 template <class S> struct BumpStop {
   static constexpr const char* kType = "bump_stop";
   static constexpr int kInternalStates = 0;
+  static constexpr bool kInGravitySag = true;
   ElementEnds ends;
   Eigen::Vector3d axis = Eigen::Vector3d::UnitY();  // unit, in frame 1
   S clearance_m = S(0);

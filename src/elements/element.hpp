@@ -4,7 +4,7 @@
 // is a std::visit over this variant, so adding a kind is its own header plus
 // its entry here and its reader in io/element_readers.cpp; the compiler
 // then checks that the kind provides everything those visits call:
-//   kType, kInternalStates, ends, set_nominal, elastic_load, set_preload,
+//   kType, kInternalStates, kInGravitySag, ends, set_nominal, elastic_load, set_preload,
 //   apply<T>, potential, internal_state_name, for_each_parameter, cast<S2>.
 #include "elements/anti_roll_bar.hpp"
 #include "elements/bump_stop.hpp"

@@ -18,6 +18,7 @@ namespace railstab {
 template <class S> struct LineSpringDamper {
   static constexpr const char* kType = "line_spring_damper";
   static constexpr int kInternalStates = 0;
+  static constexpr bool kInGravitySag = true;
   ElementEnds ends;
   ForceCharacteristic<S> spring;  // force against elongation
   ForceCharacteristic<S> damper;  // force against elongation rate

@@ -18,6 +18,7 @@ namespace railstab {
 template <class S> struct RotationalSpringDamper {
   static constexpr const char* kType = "rotational_spring_damper";
   static constexpr int kInternalStates = 0;
+  static constexpr bool kInGravitySag = true;
   ElementEnds ends;
   Vec3<S> stiffness_N_m_per_rad = Vec3<S>::Zero();
   Vec3<S> damping_N_m_s_per_rad = Vec3<S>::Zero();

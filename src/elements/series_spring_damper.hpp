@@ -28,6 +28,9 @@ namespace railstab {
 template <class S> struct SeriesSpringDamper {
   static constexpr const char* kType = "series_spring_damper";
   static constexpr int kInternalStates = 1;  // e_d, the damper elongation (m)
+  // Takes no part in the gravity sag: at any equilibrium the damper, and so
+  // the series spring, carries no force (dz/dt = 0 <=> F = 0).
+  static constexpr bool kInGravitySag = false;
   ElementEnds ends;
   S series_stiffness_N_per_m = S(0);
   ForceCharacteristic<S> damper;           // force against damper velocity

@@ -19,6 +19,7 @@ namespace railstab {
 template <class S> struct SpringDamper3d {
   static constexpr const char* kType = "spring_damper_3d";
   static constexpr int kInternalStates = 0;
+  static constexpr bool kInGravitySag = true;
   ElementEnds ends;
   Vec3<S> stiffness_N_per_m = Vec3<S>::Zero();
   Vec3<S> damping_N_s_per_m = Vec3<S>::Zero();

@@ -15,6 +15,12 @@ namespace railstab {
 template <class S> struct TractionRod {
   static constexpr const char* kType = "traction_rod";
   static constexpr int kInternalStates = 0;
+  // Takes no part in the gravity sag: a traction rod is adjusted to its
+  // length with the vehicle loaded, i.e. at the nominal configuration, and
+  // carries no static load (a rod fighting the sag of a soft secondary
+  // would otherwise get a large preload along its sagged, tilted line that
+  // no longer balances anything at nominal).
+  static constexpr bool kInGravitySag = false;
   ElementEnds ends;
   S stiffness_N_per_m = S(0);
   S damping_N_s_per_m = S(0);

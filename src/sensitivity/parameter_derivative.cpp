@@ -106,22 +106,24 @@ Eigen::VectorXd equilibrium_derivative(const Model& model, const ModelTpl<ParamD
 
 // The preloads of ERRATA 13 with their derivatives along the parameter.
 std::vector<Vec3<ParamDual>> preload_derivatives(const SceneSpec& scene, const std::string& key) {
-  const SceneSpec twin_spec = straight_twin(scene);
-  const Model twin = assemble_model(twin_spec);
+  const GravityTwin gravity = gravity_twin(scene);  // as build_model
+  const Model twin = assemble_model(gravity.spec);
   const double V = scene.speed_m_per_s;
   const Eigen::VectorXd xs = solve_equilibrium(twin, V, lowered_nominal_state(twin, V)).state;
-  const ModelTpl<ParamDual> twin_d = seeded(twin, scene, key);
+  // A key may name only elements left out of the sag: then nothing to seed.
+  ModelTpl<ParamDual> twin_d = twin.cast<ParamDual>();
+  visit_parameter(twin_d, key, [](ParamDual& p) { p.d = 1.0; });
   const Eigen::VectorXd dxs = equilibrium_derivative(twin, twin_d, V, 0.0, xs);
   Workspace<ParamDual> ws(twin_d);
   compute_all_body_motions<ParamDual>(twin_d, ws, 0.0, V, dual_state(xs, dxs));
-  std::vector<Vec3<ParamDual>> preloads;
-  for (const auto& element : twin_d.elements)
-    preloads.push_back(std::visit(
+  std::vector<Vec3<ParamDual>> preloads(scene.elements.size(), Vec3<ParamDual>::Zero());
+  for (size_t j = 0; j < twin_d.elements.size(); ++j)
+    preloads[gravity.kept[j]] = std::visit(
         [&](const auto& e) {
           const auto [a1, a2] = element_attachments(e.ends, ws);
           return e.template elastic_load<ParamDual>(a1, a2);
         },
-        element));
+        twin_d.elements[j]);
   return preloads;
 }
 

@@ -21,28 +21,28 @@ SceneSpec straight_twin(const SceneSpec& spec) {
   return twin;
 }
 
-// Elements whose force is set by an internal state that relaxes to zero
-// force at rest (a damper in series with a spring: dz/dt = 0 <=> F = 0)
-// carry nothing at any equilibrium, so the sag is the same without them.
-// They are left out of the sag solve: with a stiff series spring
-// (k_s ~ 1e9 N/m) the quadratic change of their length with the 0.1-0.2 m
-// sag of a soft secondary suspension makes the Newton solve crawl (hundreds
-// of damped iterations) for nothing.
-bool relaxes_to_zero_force(const ElementSpec& element) {
-  return std::visit([](const auto& e) { return std::decay_t<decltype(e)>::kInternalStates > 0; },
-                    element);
+// Elements that take no part in the gravity sag (kInGravitySag false: a
+// series spring-damper carries nothing at any equilibrium; a traction rod is
+// adjusted at the loaded position) are left out of it and get no preload.
+// Leaving the series elements out also keeps the solve fast: with a stiff
+// series spring (k_s ~ 1e9 N/m) the quadratic change of its length with the
+// 0.1-0.2 m sag of a soft secondary suspension makes Newton crawl.
+GravityTwin gravity_twin(const SceneSpec& scene) {
+  GravityTwin twin{straight_twin(scene), {}};
+  twin.spec.elements.clear();
+  for (size_t i = 0; i < scene.elements.size(); ++i)
+    if (std::visit([](const auto& e) { return std::decay_t<decltype(e)>::kInGravitySag; },
+                   scene.elements[i])) {
+      twin.kept.push_back(i);
+      twin.spec.elements.push_back(scene.elements[i]);
+    }
+  return twin;
 }
 
 std::vector<Eigen::Vector3d> solve_gravity_preloads(const SceneSpec& scene) {
-  SceneSpec twin_spec = straight_twin(scene);
-  std::vector<size_t> kept;  // scene element index of each twin element
-  twin_spec.elements.clear();
-  for (size_t i = 0; i < scene.elements.size(); ++i)
-    if (!relaxes_to_zero_force(scene.elements[i])) {
-      kept.push_back(i);
-      twin_spec.elements.push_back(scene.elements[i]);
-    }
-  const Model twin = assemble_model(twin_spec);
+  const GravityTwin gravity = gravity_twin(scene);
+  const std::vector<size_t>& kept = gravity.kept;
+  const Model twin = assemble_model(gravity.spec);
   const double V = scene.speed_m_per_s;
   const EquilibriumResult sagged = solve_equilibrium(twin, V, lowered_nominal_state(twin, V));
   Workspace<double> ws(twin);

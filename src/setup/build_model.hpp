@@ -14,12 +14,23 @@
 #include "model/model.hpp"
 #include "scene/scene_spec.hpp"
 
+#include <vector>
+
 namespace railstab {
 
 Model build_model(const SceneSpec& scene);
 
 // The same vehicle on straight, level track at the same speed.
 SceneSpec straight_twin(const SceneSpec& scene);
+
+// The vehicle whose sag defines the preloads: the straight twin without the
+// elements that take no part in the sag; kept[j] is the scene index of its
+// element j.
+struct GravityTwin {
+  SceneSpec spec;
+  std::vector<size_t> kept;
+};
+GravityTwin gravity_twin(const SceneSpec& scene);
 
 // The preloads of ERRATA 13 (one per element, scene order).
 std::vector<Eigen::Vector3d> solve_gravity_preloads(const SceneSpec& scene);

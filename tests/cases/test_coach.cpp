@@ -126,3 +126,44 @@ TEST(Coach, CriticalSpeedRisesWithSoftSeriesStiffness) {
   EXPECT_GT(v2 - v1, 1.0);
   EXPECT_GT(v5 - v2, 1.0);
 }
+
+// Traction rods (bogie to car body, longitudinal) are adjusted at the loaded
+// position and take no part in the gravity sag: with them the nominal
+// configuration is still the static equilibrium (before: a rod fighting the
+// 0.18 m air-spring sag got an 83 kN preload along its tilted line, and the
+// car body settled 1.05 mm low at nominal).
+TEST(Coach, TractionRodsKeepNominalTheStaticEquilibrium) {
+  SceneSpec spec = load_scene_file(kCoach);
+  for (const auto& [bogie, x_carbody] : {std::pair{"bogie1", 10.0}, std::pair{"bogie2", -10.0}}) {
+    TractionRod<double> rod;
+    rod.ends.name = std::string("traction_rod_") + bogie;
+    rod.ends.body1_name = bogie;
+    rod.ends.body2_name = "carbody";
+    rod.ends.point1_m = Eigen::Vector3d(x_carbody > 0 ? -0.5 : 0.5, 0.0, 0.0);
+    const int b = [&] {
+      for (size_t i = 0; i < spec.bodies.size(); ++i)
+        if (spec.bodies[i].name == bogie) return int(i);
+      return -1;
+    }();
+    ASSERT_GE(b, 0);
+    // The car body point at the bogie frame's height, 0.5 m inboard.
+    const BodySpec* carbody = nullptr;
+    for (const BodySpec& body : spec.bodies)
+      if (body.name == "carbody") carbody = &body;
+    ASSERT_NE(carbody, nullptr);
+    const double dx = spec.bodies[size_t(b)].track_offset_m - carbody->track_offset_m;
+    rod.ends.point2_m = Eigen::Vector3d(dx + (x_carbody > 0 ? -1.0 : 1.0), 0.0,
+                                        spec.bodies[size_t(b)].position_m.z() -
+                                            carbody->position_m.z());
+    rod.stiffness_N_per_m = 5e6;
+    spec.elements.push_back(rod);
+  }
+  validate_scene(spec);
+  const PreparedScene s = prepare_scene(std::move(spec));
+  Eigen::MatrixXd q6, qd6;
+  s.model.full_coordinates(0.0, s.speed_m_per_s, s.equilibrium.state, q6, qd6);
+  const int ws1 = s.model.find_body("wheelset1"), car = s.model.find_body("carbody");
+  const double drop_m = q6(2, ws1) - s.model.bodies[ws1].nominal_q(2);
+  EXPECT_NEAR(q6(2, car) - s.model.bodies[car].nominal_q(2), drop_m, 1e-6);
+  EXPECT_NEAR(q6(4, car), 0.0, 1e-7);  // no pitch
+}
