@@ -26,6 +26,7 @@
 #include "contact/hertz.hpp"
 #include "contact/kalker.hpp"
 #include "contact/model_contact.hpp"
+#include "contact/creep/creep_input.hpp"
 #include "kinematics/body_motion.hpp"
 
 namespace railstab {
@@ -153,9 +154,24 @@ WheelContact<T> evaluate_wheel_contact(const ModelContact& contact, const BodyMo
     f = kalker_coefficients(out.semi_axis_a_m, out.semi_axis_b_m,
                             contact.materials.shear_modulus_Pa, contact.materials.poisson_ratio);
   }
-  const T Fx = -f.f11_N * out.creep_x;
-  const T Fy = -f.f22_N * out.creep_y - f.f23_N_m * out.creep_spin_per_m;
-  const T Mz = f.f23_N_m * out.creep_y - f.f33_N_m2 * out.creep_spin_per_m;
+  // The creep law (linear Kalker, or saturating at mu N), dispatched once.
+  CreepInput<T> creep;
+  creep.creep_x = out.creep_x;
+  creep.creep_y = out.creep_y;
+  creep.creep_spin_per_m = out.creep_spin_per_m;
+  creep.normal_force_N = out.normal_force_N;
+  creep.semi_axis_a_m = out.semi_axis_a_m;
+  creep.semi_axis_b_m = out.semi_axis_b_m;
+  creep.f11_N = f.f11_N;
+  creep.f22_N = f.f22_N;
+  creep.f23_N_m = f.f23_N_m;
+  creep.f33_N_m2 = f.f33_N_m2;
+  creep.speed_m_per_s = V;
+  const CreepForces<T> F = std::visit(
+      [&](const auto& law) { return law.template forces<T>(creep); }, spec.creep_law);
+  const T Fx = F.force_x_N;
+  const T Fy = F.force_y_N;
+  const T Mz = F.spin_moment_N_m;
   out.creep_force_x_N = Fx;
   out.creep_force_y_N = Fy;
   out.spin_moment_N_m = Mz;

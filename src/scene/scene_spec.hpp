@@ -14,6 +14,9 @@
 //   non-spinning intermediate frame I = Bz Bx.
 // - Curvature > 0 turns left (+y). Cant > 0 raises the right rail, i.e. the
 //   normal cant of a left-hand curve; the track roll angle is -asin(cant / D).
+#include "contact/creep/linear_kalker_creep.hpp"
+#include "contact/creep/polach_creep.hpp"
+#include "contact/creep/shen_hedrick_elkins_creep.hpp"
 #include "core/coordinates.hpp"
 #include "elements/element.hpp"
 #include "scene/track_spec.hpp"
@@ -38,6 +41,11 @@ enum class TangentialForceKind {
   constant,      // given f11, f22, f23, f33
   none
 };
+
+// The creep law: the tangential forces from the creepages and Kalker's
+// linear coefficients (contact/creep/): one type per law, one variant.
+using CreepLawSpec =
+    std::variant<LinearKalkerCreep<double>, ShenHedrickElkinsCreep<double>, PolachCreep<double>>;
 
 struct ContactSpec {
   std::string name;
@@ -72,6 +80,9 @@ struct ContactSpec {
   double f22_N = 0.0;     // constant: lateral
   double f23_N_m = 0.0;   // constant: lateral/spin
   double f33_N_m2 = 0.0;  // constant: spin
+  // `creep_law`: linear_kalker (default, the thesis: no saturation),
+  // shen_hedrick_elkins or polach (saturate at mu N; keys in io/scene_loader).
+  CreepLawSpec creep_law = LinearKalkerCreep<double>{};
 };
 
 // --- Bodies ------------------------------------------------------------------------

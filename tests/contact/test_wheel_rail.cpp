@@ -124,3 +124,46 @@ TEST(WheelRail, CreepForcesDissipate) {
   }
   EXPECT_GT(checked, 50);
 }
+
+// The creep law is chosen per contact: Shen-Hedrick-Elkins with mu = 0.3 on
+// the same wheel gives the linear Kalker forces at small creepage (short of
+// them by u/3, u = F_lin/(mu N) ~ 1e-4) and at large creepage (0.05, where linear
+// Kalker asks for several times mu N) a tangential force of at most mu N,
+// within 2 % of it (the SHE cubic has reached u >= 3).
+TEST(WheelRail, SaturatingCreepLawIsBoundedByMuN) {
+  ModelContact linear = thesis_contact();
+  linear.spec.spin_creepage = false;  // the cone's spin would saturate on its own
+  ModelContact saturating = linear;
+  ShenHedrickElkinsCreep<double> she;
+  she.friction_coefficient = 0.3;
+  saturating.spec.creep_law = she;
+  const TrackFrameKinematics k = straight().frame_at(100.0, 20.0);
+  for (double lateral_velocity : {2e-6, 1.0}) {
+    Eigen::Matrix<double, 6, 1> q = Eigen::Matrix<double, 6, 1>::Zero(), qd = q;
+    q(2) = 0.45 - 1e-4;
+    qd(1) = lateral_velocity;  // lateral creepage ~ v / V
+    // Spin for zero longitudinal creepage at the mid-overlap contact radius.
+    qd(4) = 20.0 / (0.45 - 1e-4 + 0.5e-4 * std::cos(0.1) * std::cos(0.1));
+    BodyMotion<double> m;
+    compute_body_motion(wheelset_body(), k, q, qd, m);
+    for (int side : {1, -1}) {
+      const WheelContact<double> a = evaluate_wheel_contact(linear, m, side, 20.0);
+      const WheelContact<double> b = evaluate_wheel_contact(saturating, m, side, 20.0);
+      ASSERT_GT(a.normal_force_N, 0.0);
+      const double lin = std::hypot(a.creep_force_x_N, a.creep_force_y_N);
+      const double sat = std::hypot(b.creep_force_x_N, b.creep_force_y_N);
+      const double mu_N = 0.3 * b.normal_force_N;
+      if (lateral_velocity < 1e-3) {
+        // SHE: F = mu N (u - u^2/3 + u^3/27), u = F_lin / (mu N): the
+        // relative shortfall is u/3 to first order.
+        const double u = lin / mu_N;
+        ASSERT_LT(u, 1e-3);
+        EXPECT_NEAR((lin - sat) / lin, u / 3.0, 1e-3 * u);
+      } else {
+        EXPECT_GT(lin, 3.0 * mu_N);
+        EXPECT_LE(sat, mu_N * (1.0 + 1e-12));
+        EXPECT_GT(sat, 0.98 * mu_N);
+      }
+    }
+  }
+}

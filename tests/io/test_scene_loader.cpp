@@ -515,3 +515,34 @@ TEST(SceneLoader, ThesisVehicleCaseHasMirroredSuspension) {
   EXPECT_EQ(ends_of(secondary).point2_m, Eigen::Vector3d(-9.675, -1.0, -0.73));
   EXPECT_FALSE(scene.bodies[6].free[int(CoordinateIndex::x)]);  // car body holds the speed
 }
+
+TEST(SceneLoader, CreepLawIsReadWithItsFrictionCoefficient) {
+  const SceneSpec scene = parse_scene(
+      minimal_with("tangential = \"kalker_hertz\"",
+                   "tangential = \"kalker_hertz\"\ncreep_law = \"shen_hedrick_elkins\"\n"
+                   "friction_coefficient = 0.35\nkalker_reduction_factor = 0.6"),
+      kSource);
+  const auto* she = std::get_if<ShenHedrickElkinsCreep<double>>(&scene.contacts[0].creep_law);
+  ASSERT_NE(she, nullptr);
+  EXPECT_EQ(she->friction_coefficient, 0.35);
+  EXPECT_EQ(she->kalker_reduction_factor, 0.6);
+  // Default: linear Kalker without reduction (the thesis).
+  const SceneSpec plain = parse_scene(minimal_with("", ""), kSource);
+  const auto* lin = std::get_if<LinearKalkerCreep<double>>(&plain.contacts[0].creep_law);
+  ASSERT_NE(lin, nullptr);
+  EXPECT_EQ(lin->kalker_reduction_factor, 1.0);
+}
+
+TEST(SceneLoader, CreepLawKeysAreChecked) {
+  expect_scene_error(minimal_with("tangential = \"kalker_hertz\"",
+                                  "tangential = \"kalker_hertz\"\nfriction_coefficient = 0.3"),
+                     {"contacts.", ".friction_coefficient",
+                      "no friction_coefficient with creep_law = \"linear_kalker\""});
+  expect_scene_error(minimal_with("tangential = \"kalker_hertz\"",
+                                  "tangential = \"kalker_hertz\"\ncreep_law = \"polach\"\n"
+                                  "friction_coefficient = 5.0"),
+                     {".friction_coefficient", "expected a number in (0, 2]", "got 5"});
+  expect_scene_error(minimal_with("tangential = \"kalker_hertz\"",
+                                  "tangential = \"kalker_hertz\"\ncreep_law = \"coulomb\""),
+                     {".creep_law", "'linear_kalker', 'shen_hedrick_elkins', 'polach'"});
+}

@@ -18,6 +18,9 @@ CreepForces<T> LinearKalkerCreep<S>::forces(const CreepInput<T>& in) const {
 
 template struct LinearKalkerCreep<double>;
 template struct LinearKalkerCreep<AdScalar>;
+template CreepForces<ParamDual> LinearKalkerCreep<double>::forces(const CreepInput<ParamDual>&) const;
+template CreepForces<ParamAdScalar> LinearKalkerCreep<double>::forces(
+    const CreepInput<ParamAdScalar>&) const;
 template CreepForces<double> LinearKalkerCreep<double>::forces(const CreepInput<double>&) const;
 template CreepForces<AdScalar> LinearKalkerCreep<double>::forces(
     const CreepInput<AdScalar>&) const;

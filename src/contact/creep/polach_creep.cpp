@@ -86,6 +86,9 @@ CreepForces<T> PolachCreep<S>::forces(const CreepInput<T>& in) const {
 
 template struct PolachCreep<double>;
 template struct PolachCreep<AdScalar>;
+template CreepForces<ParamDual> PolachCreep<double>::forces(const CreepInput<ParamDual>&) const;
+template CreepForces<ParamAdScalar> PolachCreep<double>::forces(
+    const CreepInput<ParamAdScalar>&) const;
 template CreepForces<double> PolachCreep<double>::forces(const CreepInput<double>&) const;
 template CreepForces<AdScalar> PolachCreep<double>::forces(const CreepInput<AdScalar>&) const;
 template CreepForces<AdScalar> PolachCreep<AdScalar>::forces(const CreepInput<AdScalar>&) const;

@@ -32,6 +32,9 @@ CreepForces<T> ShenHedrickElkinsCreep<S>::forces(const CreepInput<T>& in) const 
 
 template struct ShenHedrickElkinsCreep<double>;
 template struct ShenHedrickElkinsCreep<AdScalar>;
+template CreepForces<ParamDual> ShenHedrickElkinsCreep<double>::forces(const CreepInput<ParamDual>&) const;
+template CreepForces<ParamAdScalar> ShenHedrickElkinsCreep<double>::forces(
+    const CreepInput<ParamAdScalar>&) const;
 template CreepForces<double> ShenHedrickElkinsCreep<double>::forces(
     const CreepInput<double>&) const;
 template CreepForces<AdScalar> ShenHedrickElkinsCreep<double>::forces(
