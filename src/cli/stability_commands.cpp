@@ -225,7 +225,8 @@ void run_critical_speed(const CommonArgs& a, CriticalSpeedOptions opt) {
               << " km/h)" << std::defaultfloat << std::setprecision(5) << ", frequency "
               << m.frequency_hz << " Hz, mode " << m.name << "\n";
   }
-  if (r.equilibrium_lost_at_m_per_s > 0.0)
+  if (r.partial) std::cout << "partial result: " << r.partial_reason << "\n";
+  else if (r.equilibrium_lost_at_m_per_s > 0.0)
     std::cout << "no steady state from " << r.equilibrium_lost_at_m_per_s
               << " m/s: " << r.equilibrium_error << "\n";
   for (const StabilityPoint& p : r.grid)

@@ -153,6 +153,11 @@ void write_json(std::ostream& out, const Model& model, const CriticalSpeedResult
     JsonWriter j(out);
     j.begin_object().field("scene", model.name).field("source", model.source_path);
     j.key("speed_range_m_s").begin_array().value(r.from_m_per_s).value(r.to_m_per_s).end_array();
+    j.field("partial", r.partial);
+    if (r.partial)
+      j.field("partial_reason", r.partial_reason);
+    else
+      j.key("partial_reason").null();
     j.field("stable_in_range", r.stable_in_range).field("unstable_at_start", r.unstable_at_start);
     if (r.equilibrium_lost_at_m_per_s > 0.0)
       j.field("equilibrium_lost_at_m_s", r.equilibrium_lost_at_m_per_s)
@@ -224,6 +229,10 @@ void write_markdown(std::ostream& md_out, const Model& model, const CriticalSpee
        << r.to_m_per_s << " m/s, " << (r.grid.empty() ? 0 : r.grid.front().linear.A.rows())
        << " states after removing " << (r.grid.empty() ? 0 : r.grid.front().linear.removed_states.size())
        << " cyclic coordinates, eigen-solver " << solver << ".\n\n";
+    if (r.partial)
+      md << "**Partial result**: the run could not finish what was asked; what it found is "
+            "below. Reason: "
+         << md_text(r.partial_reason) << "\n\n";
     if (r.equilibrium_lost_at_m_per_s > 0.0)
       md << "No steady state at " << r.equilibrium_lost_at_m_per_s
          << " m/s and above (" << md_text(r.equilibrium_error) << "); the analysis covers the speeds "

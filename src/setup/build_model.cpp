@@ -2,6 +2,7 @@
 
 #include "equilibrium/equilibrium.hpp"
 #include "model/equations_of_motion.hpp"
+#include "setup/model_error_context.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -22,7 +23,12 @@ SceneSpec straight_twin(const SceneSpec& spec) {
 std::vector<Eigen::Vector3d> solve_gravity_preloads(const SceneSpec& scene) {
   const Model twin = assemble_model(straight_twin(scene));
   const double V = scene.speed_m_per_s;
-  const EquilibriumResult sagged = solve_equilibrium(twin, V, lowered_nominal_state(twin, V));
+  const EquilibriumResult sagged = with_model_context(
+      twin,
+      {"static sag on straight track for the suspension preloads (preload = "
+       "'balance_gravity_at_nominal')",
+       V},
+      [&] { return solve_equilibrium(twin, V, lowered_nominal_state(twin, V)); });
   Workspace<double> ws(twin);
   compute_all_body_motions<double>(twin, ws, 0.0, V, sagged.state);
   std::vector<Eigen::Vector3d> preloads;
