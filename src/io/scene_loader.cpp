@@ -133,9 +133,10 @@ std::string range_text(const PhysicalRange& range) {
 // in a body name: such names are refused here, as are names longer than
 // kMaxNameBytes (a 4000-character name made file names too long). Any other
 // UTF-8 text is allowed ("Drehgestell 1", "w,1" and quotes are escaped).
-std::optional<std::string> name_problem(std::string_view name) {
+std::optional<std::string> name_problem(std::string_view name,
+                                        size_t max_bytes = physical_ranges::kMaxNameBytes) {
   if (name.empty()) return "an empty name";
-  if (name.size() > physical_ranges::kMaxNameBytes)
+  if (name.size() > max_bytes)
     return "a name of " + std::to_string(name.size()) + " bytes";
   for (size_t i = 0; i < name.size(); ++i) {
     const unsigned char u = static_cast<unsigned char>(name[i]);
@@ -929,6 +930,9 @@ ElementList read_elements(const TableReader& top) {
     const TableReader element = any.with_keys(keys, "a " + std::string(reader.type));
     ElementEnds ends;
     ends.name = element.text("name");
+    // Checked here, before mirroring appends "_left" / "_right".
+    if (const std::optional<std::string> problem = name_problem(ends.name))
+      element.fail("name", kNameExpectation, *problem);
     ends.body1_name = element.text("body1");
     ends.body2_name = element.text("body2");
     const std::optional<Eigen::Vector3d> no_point =
@@ -1250,7 +1254,10 @@ class SceneChecker {
     const std::string path =
         index < element_paths_.size() ? element_paths_[index] : indexed_path("elements", index);
     if (element.name.empty()) fail(child_path(path, "name"), "a non-empty name", "''");
-    check_name(child_path(path, "name"), element.name);
+    // (+ 6: a mirrored element's "_right"; the file's name was checked by the reader.)
+    if (const std::optional<std::string> problem =
+            name_problem(element.name, physical_ranges::kMaxNameBytes + 6))
+      fail(child_path(path, "name"), kNameExpectation, *problem);
     if (element.body1_name != kTrackBodyName && !has_body(element.body1_name))
       throw unknown_body(child_path(path, "body1"), element.body1_name, "; or 'track'");
     if (element.body2_name == kTrackBodyName)

@@ -190,7 +190,12 @@ std::string describe_model_failure(const Model& model, const EvaluationPlace& pl
       m << "the bodies' mass_kg and inertia_kg_m2 against the elements' stiffness and damping "
            "(a stiffness/mass ratio of 1e16 1/s2 or more leaves no digits)";
   } else if (mentions(what, {"equilibrium"})) {
-    if (body >= 0)
+    if (d.displaced_wheelset >= 0 && std::abs(d.lateral_shift_m) > d.clearance_m)
+      m << "the cant deficiency at this speed and place (scene.speed_m_per_s, "
+           "scene.reference_arc_length_m or --arc-length, track.segments end_cant_m): "
+        << body_path(model, d.displaced_wheelset)
+        << " is past its flange clearance, where the flangeless contact has no steady state";
+    else if (body >= 0)
       m << "the elements that hold " << body_path(model, body) << " ("
         << elements_on(model, body)
         << "): a free coordinate without a restoring element has no steady state; or the "
