@@ -1212,8 +1212,10 @@ class SceneChecker {
       require_in(child_path(child_path(path, "initial_rate"), kRateKeys[c].key),
                  body.initial_rate[c], angle ? r::rate_rad_per_s : r::rate_m_per_s);
     }
-    if (body.is_wheelset)
+    if (body.is_wheelset) {
       check_wheelset_contact(child_path(path, "contact"), body);
+      check_wheelset_position(child_path(path, "position_m"), body);
+    }
     else if (!body.contact.empty())
       fail(child_path(path, "contact"),
            "no contact on a rigid_body (only wheelsets touch the rails)", quoted(body.contact));
@@ -1235,6 +1237,29 @@ class SceneChecker {
                  names[i] + " + " + names[j] + " = " + format_number(J(i) + J(j)) + " < " +
                  names[k] + " = " + format_number(J(k)) + ")");
     }
+  }
+
+  // A wheelset's nominal position is on the rails: its centre within the
+  // flange clearance of the track centre and at its rolling radius above
+  // the rail plane (10 %). A wheelset placed at y = -1 m failed deep in the
+  // model ("relative curvatures must be positive") or found no equilibrium.
+  void check_wheelset_position(const std::string& path, const BodySpec& wheelset) const {
+    const ContactSpec* contact = find_contact(wheelset.contact);
+    if (!contact) return;
+    const double y = wheelset.position_m.y(), z = wheelset.position_m.z();
+    const double clearance = contact->flange_clearance_m, r0 = contact->nominal_rolling_radius_m;
+    if (!(std::abs(y) <= clearance))
+      fail(indexed_path(path, 1),
+           "a wheelset's nominal lateral position within the flange clearance of the track "
+           "centre, [-" + format_number(clearance) + ", " + format_number(clearance) +
+               "] m (contacts." + contact->name + ".flange_clearance_m)",
+           format_number(y));
+    if (!(std::abs(z - r0) <= 0.1 * r0))
+      fail(indexed_path(path, 2),
+           "a wheelset's axle height at its rolling radius above the rail plane, " +
+               format_number(r0) + " m within 10 % (contacts." + contact->name +
+               ".nominal_rolling_radius_m)",
+           format_number(z));
   }
 
   void check_wheelset_contact(std::string_view path, const BodySpec& wheelset) const {

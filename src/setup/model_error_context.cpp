@@ -112,6 +112,10 @@ std::string without_function_name(std::string_view message) {
       {"eigen_arpack_shift_invert: ", "eigenvalues (ARPACK): "},
       {"modal_assurance: ", "mode tracking: "},
       {"assemble_model: ", "model assembly: "},
+      {"make_profile_pair: ", "wheel-rail profile pair: "},
+      {"make_contact_table: ", "contact table: "},
+      {"minimum_gap_in_wheel_range: ", "contact point search: "},
+      {"solve_equilibrium: ", "equilibrium solver: "},
   };
   std::string text(message);
   for (const auto& [name, words] : kWords)

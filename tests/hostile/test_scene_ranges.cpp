@@ -149,6 +149,23 @@ TEST(SceneRanges, StoredOutputsAreBoundedByTheReaderNamingTheKey) {
   EXPECT_EQ(error_of(with("output_interval_s = 0.01", "output_interval_s = 2e-5")), "");
 }
 
+// Issue 10: "a body placed at y = -1 m" failed deep in the Hertz contact.
+TEST(SceneRanges, WheelsetsMustSitOnTheRails) {
+  std::string message =
+      error_of(with("position_m = [0.0, 0.0, 0.45]", "position_m = [0.0, -1.0, 0.45]"));
+  EXPECT_NE(message.find("bodies[0].position_m[1]: expected a wheelset's nominal lateral "
+                         "position within the flange clearance of the track centre, [-0.0075, "
+                         "0.0075] m"),
+            std::string::npos)
+      << message;
+  message = error_of(with("position_m = [0.0, 0.0, 0.45]", "position_m = [0.0, 0.0, 0.9]"));
+  EXPECT_NE(message.find("bodies[0].position_m[2]: expected a wheelset's axle height at its "
+                         "rolling radius above the rail plane, 0.45 m within 10 %"),
+            std::string::npos)
+      << message;
+  EXPECT_EQ(error_of(with("position_m = [0.0, 0.0, 0.45]", "position_m = [0.0, 0.007, 0.46]")), "");
+}
+
 TEST(SceneRanges, HalfContactDistanceMustMatchTheRailContactDistance) {
   const std::string message =
       error_of(with("half_contact_distance_m = 0.75", "half_contact_distance_m = 0.5"));
