@@ -24,8 +24,8 @@ echo "== test suite under ASan + UBSan (left out: $skip)" >&2
 (cd $build && ctest -j2 --output-on-failure -E "$skip")
 
 echo "== libFuzzer: ${fuzz_seconds} s per harness" >&2
-run_fuzzer() {  # name, seed files...
-  local name=$1; shift
+run_fuzzer() {  # name, max input length, seed files...
+  local name=$1 max_len=$2; shift 2
   local work=$build/fuzz/$name
   rm -rf "$work" && mkdir -p "$work/corpus" "$work/seeds" "$work/artifacts"
   cp "$@" "$work/seeds/"
@@ -33,7 +33,7 @@ run_fuzzer() {  # name, seed files...
   # runaway memory is a finding too.
   ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
     $build/fuzz_$name -max_total_time="$fuzz_seconds" -timeout=20 -rss_limit_mb=2048 \
-    -max_len=16384 -print_final_stats=1 -artifact_prefix="$work/artifacts/" \
+    -max_len="$max_len" -print_final_stats=1 -artifact_prefix="$work/artifacts/" \
     "$work/corpus" "$work/seeds" 2>"$work/log" || {
       tail -n 60 "$work/log" >&2
       echo "fuzz_$name: FINDING (input saved in $work/artifacts/)" >&2
@@ -42,10 +42,10 @@ run_fuzzer() {  # name, seed files...
   grep -E "stat::number_of_executed_units|stat::peak_rss_mb" "$work/log" >&2 || true
   echo "fuzz_$name: no finding in ${fuzz_seconds} s" >&2
 }
-run_fuzzer scene cases/*.toml
+run_fuzzer scene 16384 cases/*.toml
 # Profile seeds: the first byte picks the reader (0 .prw, 1 .prr, 2 plain mm).
 seeds=$build/fuzz/profile_seeds && rm -rf $seeds && mkdir -p $seeds
 { printf '\0'; cat cases/profiles/MBench_S1002_v3.prw; } > $seeds/s1002.prw
 { printf '\1'; cat cases/profiles/MBench_UIC60_v3.prr; } > $seeds/uic60.prr
 printf '\2# y z in mm\n-30 1\n-20 0.5\n0 0\n20 -0.5\n30 -1\n' > $seeds/plain.txt
-run_fuzzer profile $seeds/*
+run_fuzzer profile 65536 $seeds/*

@@ -60,7 +60,10 @@ int write_track_blocks(std::ostream& out, const CriticalSpeedResult& r,
   int blocks = 0;
   out << std::setprecision(10) << "# speed_m_s real_per_s frequency_hz damping_ratio, one block "
                                   "per tracked mode\n";
-  for (const auto& [id, points] : tracks) {
+  for (const auto& track : tracks) {
+    // (Not a structured binding: clang 14 cannot capture one in the lambda.)
+    const int id = track.first;
+    const auto& points = track.second;
     if (points.size() < 2) continue;
     out << "# track " << id << "\n";
     for (const auto& p : points) {
