@@ -18,6 +18,7 @@
 // used where 0 means "not physical" but tiny positive values are fine).
 // Keys that may be 0 (dampings, stiffnesses of a free direction) have
 // low = 0, closed.
+#include <cstddef>
 #include <string_view>
 
 namespace railstab {

@@ -23,12 +23,12 @@ SceneSpec straight_twin(const SceneSpec& spec) {
 std::vector<Eigen::Vector3d> solve_gravity_preloads(const SceneSpec& scene) {
   const Model twin = assemble_model(straight_twin(scene));
   const double V = scene.speed_m_per_s;
+  EvaluationPlace place{"static sag on straight, level track for the suspension preloads "
+                        "(preload = 'balance_gravity_at_nominal')",
+                        V};
+  place.on_scene_track = false;
   const EquilibriumResult sagged = with_model_context(
-      twin,
-      {"static sag on straight track for the suspension preloads (preload = "
-       "'balance_gravity_at_nominal')",
-       V},
-      [&] { return solve_equilibrium(twin, V, lowered_nominal_state(twin, V)); });
+      twin, place, [&] { return solve_equilibrium(twin, V, lowered_nominal_state(twin, V)); });
   Workspace<double> ws(twin);
   compute_all_body_motions<double>(twin, ws, 0.0, V, sagged.state);
   std::vector<Eigen::Vector3d> preloads;

@@ -139,8 +139,9 @@ std::string describe_model_failure(const Model& model, const EvaluationPlace& pl
   std::ostringstream m;
   m.precision(6);
   m << (model.source_path.empty() ? std::string("<scene>") : model.source_path) << ": "
-    << place.stage << " of scene '" << model.name << "' at V = " << V
-    << " m/s, reference point at arc length " << model.reference_arc_length_m + V * t << " m";
+    << place.stage << " of scene '" << model.name << "' at V = " << V << " m/s";
+  if (place.on_scene_track)
+    m << ", reference point at arc length " << model.reference_arc_length_m + V * t << " m";
   if (t != 0.0) m << " (t = " << t << " s)";
   m << ": " << inner;
 

@@ -36,6 +36,9 @@ struct EvaluationPlace {
   // The matrix an eigen-solver refused, when that was the failure.
   const Eigen::MatrixXd* matrix = nullptr;
   const std::vector<std::string>* matrix_state_names = nullptr;
+  // False for a model that is not the user's track (the straight twin of
+  // the preload solve): its arc length would mean nothing to the user.
+  bool on_scene_track = true;
 };
 
 // The full message for `error` raised at `place` (see the file comment).

@@ -6,11 +6,14 @@
 // rails.
 #include <gtest/gtest.h>
 
+#include "io/scene_loader.hpp"
 #include "model/equations_of_motion.hpp"
 #include "setup/model_error_context.hpp"
 #include "setup/prepare_scene.hpp"
 #include "stability/speed_analysis.hpp"
 
+#include <fstream>
+#include <sstream>
 #include <string>
 
 using namespace railstab;
@@ -152,4 +155,36 @@ TEST(ModelErrors, LateralInitialOffsetStartsWithBothWheelsInContact) {
   // contact (the value the extreme_* cases give by hand, 1.4235e-4 per mm).
   const double lambda = std::tan(0.1);
   EXPECT_NEAR(x0(kroll) - s.equilibrium.state(kroll), lambda * 0.001 / (0.75 - 0.45 * lambda), 2e-6);
+}
+
+// No vertical primary stiffness: the bogie has nothing to rest on, so the
+// preload sag has no equilibrium. The message names the stage (on the
+// straight twin, so no arc length of the user's track), the bogie and the
+// elements that should hold it.
+TEST(ModelErrors, PreloadSagWithoutSupportNamesTheBodyAndItsElements) {
+  std::ifstream in(kCases + "/thesis_bogie_tangent.toml");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string scene = text.str();
+  const std::string stiff = "stiffness_N_per_m = [3.9e7, 7.85e6, 9.75e5]";
+  for (size_t at = scene.find(stiff); at != std::string::npos; at = scene.find(stiff, at))
+    scene.replace(at, stiff.size(), "stiffness_N_per_m = [3.9e7, 7.85e6, 0.0]");
+  std::string message;
+  try {
+    prepare_scene(parse_scene(scene, "soft.toml"));
+  } catch (const ModelError& e) {
+    message = e.what();
+  }
+  EXPECT_EQ(message.rfind("soft.toml: static sag on straight, level track for the suspension "
+                          "preloads (preload = 'balance_gravity_at_nominal') of scene "
+                          "'thesis_bogie_tangent' at V = 20 m/s: no equilibrium",
+                          0),
+            0u)
+      << message;
+  EXPECT_FALSE(has(message, "arc length")) << message;
+  EXPECT_TRUE(has(message, "state bogie1.z_m/s")) << message;
+  EXPECT_TRUE(has(message, "Most likely responsible: the elements that hold bodies[2] ('bogie1') "
+                           "(primary_ws1_left, primary_ws1_right, primary_ws2_left, "
+                           "primary_ws2_right)"))
+      << message;
 }
