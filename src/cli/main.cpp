@@ -6,6 +6,7 @@
 #include "cli/stability_commands.hpp"
 #include "cli/verify_command.hpp"
 #include "cli/work_precision_command.hpp"
+#include "setup/model_error_context.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -34,7 +35,9 @@ int main(int argc, char** argv) {
               << "`)\n";
     return e.get_exit_code();
   } catch (const std::exception& e) {
-    std::cerr << "railstab: error: " << e.what() << "\n";
+    // The analyses place their errors (setup/model_error_context.hpp); any
+    // message that still opens with an internal function name gets words.
+    std::cerr << "railstab: error: " << railstab::without_function_name(e.what()) << "\n";
     return 1;
   }
   return 0;

@@ -27,9 +27,15 @@ std::vector<int> equilibrium_unknowns(const Model& model) {
 
 namespace {
 
-// The residual: accelerations and internal-state rates.
-Eigen::VectorXd residual(const Model& model, double speed, double t, const Eigen::VectorXd& x) {
-  return rhs(model, speed, t, x).tail(model.state_size() - model.n_coordinates);
+// The equations: rows of the state derivative that must vanish
+// (accelerations and internal-state rates).
+std::vector<int> equation_rows(const Model& model, const std::vector<int>& only_positions) {
+  std::vector<int> rows;
+  if (only_positions.empty())
+    for (int k = model.n_coordinates; k < model.state_size(); ++k) rows.push_back(k);
+  else
+    for (int k : only_positions) rows.push_back(model.n_coordinates + k);
+  return rows;
 }
 
 }  // namespace
@@ -69,28 +75,64 @@ EquilibriumResult solve_equilibrium(const Model& model, double speed_m_per_s,
   const int n = model.n_coordinates;
   const double t = options.time_s;
   const double V = speed_m_per_s;
-  const std::vector<int> unknowns = equilibrium_unknowns(model);
+  for (int k : options.only_positions)
+    if (!model.is_position(k) || is_spin_angle(model, k))
+      throw std::invalid_argument("equilibrium solver: only_positions holds state " +
+                                  std::to_string(k) + ", not a non-spin position");
+  const std::vector<int> unknowns =
+      options.only_positions.empty() ? equilibrium_unknowns(model) : options.only_positions;
+  const std::vector<int> rows = equation_rows(model, options.only_positions);
   const int m = int(unknowns.size());
+  auto residual = [&](const Model&, double, double, const Eigen::VectorXd& state) {
+    const Eigen::VectorXd xdot = rhs(model, V, t, state);
+    Eigen::VectorXd r(m);
+    for (int i = 0; i < m; ++i) r(i) = xdot(rows[i]);
+    return r;
+  };
+  if (guess.size() != model.state_size())
+    throw std::invalid_argument("equilibrium solver: guess has " + std::to_string(guess.size()) +
+                                " entries, the model " + std::to_string(model.state_size()) +
+                                " states");
   Eigen::VectorXd x = guess;
   // Velocities other than spin rates are zero at an equilibrium.
   for (int k = 0; k < n; ++k)
     if (!is_spin_angle(model, k)) x(n + k) = 0.0;
 
   EquilibriumResult result;
-  Eigen::VectorXd r = residual(model, V, t, x);
+  // Errors of the model at an accepted iterate end the solve; the iterate
+  // goes with the error so the caller can say where the vehicle was.
+  auto fail = [&](const std::string& message) -> EquilibriumError {
+    return EquilibriumError(message, x, result.worst_state);
+  };
+  auto at_iterate = [&](const char* what, auto&& evaluate) {
+    try {
+      return evaluate();
+    } catch (const std::bad_alloc&) {
+      throw;
+    } catch (const std::exception& e) {
+      std::ostringstream msg;
+      msg << "no equilibrium found for scene '" << model.name << "' at speed " << V
+          << " m/s: the model cannot be evaluated (" << what << ") after " << result.iterations
+          << " Newton iterations: " << e.what();
+      throw fail(msg.str());
+    }
+  };
+  Eigen::VectorXd r = at_iterate("residual", [&] { return residual(model, V, t, x); });
   for (int it = 0; it <= options.max_iterations; ++it) {
     Eigen::Index worst = 0;
     result.max_acceleration = m > 0 ? r.cwiseAbs().maxCoeff(&worst) : 0.0;
     result.iterations = it;
-    result.worst_state = m > 0 ? model.state_name(n + int(worst)) : "";
+    result.worst_state = m > 0 ? model.state_name(rows[size_t(worst)]) : "";
     if (result.max_acceleration <= options.acceleration_tolerance) {
       result.state = x;
       return result;
     }
     if (it == options.max_iterations) break;
-    const Eigen::MatrixXd jac = rhs_jacobian_ad(model, V, t, x);
+    const Eigen::MatrixXd jac =
+        at_iterate("Jacobian", [&] { return rhs_jacobian_ad(model, V, t, x); });
     Eigen::MatrixXd J(m, m);
-    for (int j = 0; j < m; ++j) J.col(j) = jac.block(n, unknowns[j], m, 1);
+    for (int i = 0; i < m; ++i)
+      for (int j = 0; j < m; ++j) J(i, j) = jac(rows[i], unknowns[j]);
     // Minimum-norm step: a neutral direction (e.g. an unrestrained
     // longitudinal drift) does not stop the solve.
     const Eigen::VectorXd step = J.completeOrthogonalDecomposition().solve(-r);
@@ -100,7 +142,7 @@ EquilibriumResult solve_equilibrium(const Model& model, double speed_m_per_s,
     Eigen::VectorXd x_try = x;
     Eigen::VectorXd r_try;
     bool accepted = false;
-    for (int ls = 0; ls < 30; ++ls) {
+    for (int ls = 0; ls < 30 && step.allFinite(); ++ls) {
       x_try = x;
       for (int j = 0; j < m; ++j) x_try(unknowns[j]) += alpha * step(j);
       try {
@@ -109,8 +151,11 @@ EquilibriumResult solve_equilibrium(const Model& model, double speed_m_per_s,
           accepted = true;
           break;
         }
-      } catch (const std::runtime_error&) {
-        // non-finite trial point: shorten the step
+      } catch (const std::bad_alloc&) {
+        throw;
+      } catch (const std::exception&) {
+        // A trial point the model cannot evaluate (non-finite, a wheel
+        // whose contact is undefined there): shorten the step.
       }
       alpha *= 0.5;
     }
@@ -123,7 +168,7 @@ EquilibriumResult solve_equilibrium(const Model& model, double speed_m_per_s,
       << " m/s: after " << result.iterations
       << " Newton iterations the largest acceleration residual is " << result.max_acceleration
       << " (state " << result.worst_state << ")";
-  throw std::runtime_error(msg.str());
+  throw fail(msg.str());
 }
 
 }  // namespace railstab

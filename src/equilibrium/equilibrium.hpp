@@ -12,15 +12,32 @@
 
 #include <Eigen/Dense>
 
+#include <stdexcept>
 #include <string>
 #include <vector>
+#include <utility>
 
 namespace railstab {
+
+// Newton did not converge, or the model failed at an iterate: the message,
+// the last iterate (for a diagnosis of where the vehicle went) and the
+// state with the largest residual.
+struct EquilibriumError : std::runtime_error {
+  EquilibriumError(const std::string& message, Eigen::VectorXd last, std::string worst)
+      : std::runtime_error(message), last_state(std::move(last)), worst_state(std::move(worst)) {}
+  Eigen::VectorXd last_state;
+  std::string worst_state;
+};
 
 struct EquilibriumOptions {
   double time_s = 0.0;                    // where along the track (frames at s(t))
   double acceleration_tolerance = 1e-7;   // max |acceleration| (m/s^2, rad/s^2)
   int max_iterations = 60;
+  // Empty: the full equilibrium (unknowns as described above). Otherwise
+  // only these position states are unknown, the rest of the state is held,
+  // and the equations are their accelerations: a partial equilibrium, e.g.
+  // a wheelset's height and roll for a given lateral offset.
+  std::vector<int> only_positions;
 };
 
 struct EquilibriumResult {
@@ -30,8 +47,11 @@ struct EquilibriumResult {
   std::string worst_state;     // name of the largest residual
 };
 
-// Throws std::runtime_error ("no equilibrium ...: residual of <state> ...")
-// when Newton does not converge.
+// Throws EquilibriumError ("no equilibrium ...: residual of <state> ...")
+// when Newton does not converge or the model cannot be evaluated at an
+// iterate (e.g. a wheel so far off the rail that its contact is undefined).
+// A trial point of the line search that the model cannot evaluate only
+// shortens the step.
 EquilibriumResult solve_equilibrium(const Model& model, double speed_m_per_s,
                                     const Eigen::VectorXd& guess,
                                     const EquilibriumOptions& options = {});

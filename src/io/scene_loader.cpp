@@ -23,6 +23,7 @@
 #include "io/scene_loader.hpp"
 
 #include "io/regular_file.hpp"
+#include "scene/physical_ranges.hpp"
 
 #include <toml++/toml.h>
 
@@ -30,6 +31,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <functional>
 #include <optional>
@@ -116,6 +118,42 @@ std::string describe_found(const toml::node& node) {
 }
 
 const char* const kMissingKey = "nothing (the key is missing)";
+
+// "a mass in [0.1, 1e6] kg" (scene/physical_ranges.hpp).
+std::string range_text(const PhysicalRange& range) {
+  return std::string(range.noun) + " in " + (range.low_open ? "(" : "[") +
+         format_number(range.low) + ", " + format_number(range.high) + "]" +
+         (range.unit.empty() ? "" : " " + std::string(range.unit));
+}
+
+// Names end up in messages on a terminal, CSV headers, JSON, Markdown and
+// gnuplot titles. Every format escapes them (io/csv.hpp, io/json_writer.hpp),
+// but a control character (ESC, CR, a C1 code) in a message printed to a
+// terminal is a terminal command, and no engineer means a tab or a newline
+// in a body name: such names are refused here, as are names longer than
+// kMaxNameBytes (a 4000-character name made file names too long). Any other
+// UTF-8 text is allowed ("Drehgestell 1", "w,1" and quotes are escaped).
+std::optional<std::string> name_problem(std::string_view name,
+                                        size_t max_bytes = physical_ranges::kMaxNameBytes) {
+  if (name.empty()) return "an empty name";
+  if (name.size() > max_bytes)
+    return "a name of " + std::to_string(name.size()) + " bytes";
+  for (size_t i = 0; i < name.size(); ++i) {
+    const unsigned char u = static_cast<unsigned char>(name[i]);
+    const bool c1 = u == 0xC2 && i + 1 < name.size() &&
+                    static_cast<unsigned char>(name[i + 1]) >= 0x80 &&
+                    static_cast<unsigned char>(name[i + 1]) <= 0x9F;
+    if (u < 0x20 || u == 0x7F || c1) {
+      char code[8];
+      std::snprintf(code, sizeof code, "0x%02X", c1 ? unsigned(static_cast<unsigned char>(name[i + 1])) : unsigned(u));
+      return "a control character (" + std::string(code) + ") at byte " + std::to_string(i);
+    }
+  }
+  return std::nullopt;
+}
+const std::string kNameExpectation =
+    "a name of 1 to " + std::to_string(physical_ranges::kMaxNameBytes) +
+    " bytes without control characters";
 
 // ============================================================================
 // 2. Key suggestions
@@ -444,8 +482,10 @@ double read_clothoid_end_curvature(const TableReader& segment) {
     return segment.number("end_curvature_per_m", "1/m");
   }
   const double radius = segment.number("end_radius_m", "m");
-  if (!(radius > 0))
-    segment.fail("end_radius_m", "a positive number (m); end_curvature_per_m = 0 ends a curve",
+  if (!physical_ranges::curve_radius_m.contains(radius))
+    segment.fail("end_radius_m",
+                 range_text(physical_ranges::curve_radius_m) +
+                     " (end_curvature_per_m = 0 ends a curve)",
                  format_number(radius));
   return segment.choice("turn", kTurnSigns) / radius;
 }
@@ -743,37 +783,37 @@ const std::vector<std::string_view> kCommonElementKeys = {"name",     "type",   
                                                           "body2",    "point1_m", "point2_m",
                                                           "mirror_lateral"};
 
-double non_negative(const TableReader& t, std::string_view key, std::string_view unit,
-                    std::optional<double> fallback = std::nullopt) {
-  const double v = fallback && !t.has(key) ? *fallback : t.number(key, unit);
-  if (!(v >= 0.0)) t.fail(key, "a number >= 0" + unit_suffix(unit), format_number(v));
+// A number in its physical range (scene/physical_ranges.hpp), optionally
+// with a default for a missing key.
+double ranged(const TableReader& t, std::string_view key, const PhysicalRange& range,
+              std::optional<double> fallback = std::nullopt) {
+  const double v = fallback && !t.has(key) ? *fallback : t.number(key, range.unit);
+  if (!range.contains(v)) t.fail(key, range_text(range), format_number(v));
   return v;
 }
-double positive(const TableReader& t, std::string_view key, std::string_view unit,
-                std::optional<double> fallback = std::nullopt) {
-  const double v = fallback && !t.has(key) ? *fallback : t.number(key, unit);
-  if (!(v > 0.0)) t.fail(key, "a number > 0" + unit_suffix(unit), format_number(v));
-  return v;
-}
-Eigen::Vector3d non_negative_each(const TableReader& t, std::string_view key,
-                                  std::string_view unit) {
-  const Eigen::Vector3d v = t.vector3(key, unit);
-  if (!(v.array() >= 0.0).all())
-    t.fail(key, "three numbers >= 0" + unit_suffix(unit), format_vector(v));
+// Three numbers, each in the range; the message names the component.
+Eigen::Vector3d ranged_each(const TableReader& t, std::string_view key, const PhysicalRange& range,
+                            std::optional<Eigen::Vector3d> fallback = std::nullopt) {
+  const Eigen::Vector3d v = fallback && !t.has(key) ? *fallback : t.vector3(key, range.unit);
+  for (Eigen::Index i = 0; i < 3; ++i)
+    if (!range.contains(v(i)))
+      fail_expectation(t.source(), indexed_path(t.path_of(key), size_t(i)), range_text(range),
+                       format_number(v(i)));
   return v;
 }
 
 // A force characteristic: `linear_key` (a coefficient) or `table_key`
 // ([[x, F], ...] with x strictly increasing), exactly one of them.
 ForceCharacteristic<double> characteristic(const TableReader& t, std::string_view linear_key,
-                                           std::string_view linear_unit,
-                                           std::string_view table_key, std::string_view x_unit,
+                                           const PhysicalRange& linear_range,
+                                           std::string_view table_key, const PhysicalRange& x_range,
                                            bool required = true) {
+  const std::string_view linear_unit = linear_range.unit, x_unit = x_range.unit;
   const bool has_linear = t.has(linear_key), has_table = t.has(table_key);
   if (has_linear && has_table)
     t.fail(table_key, "either " + std::string(linear_key) + " or " + std::string(table_key),
            "both");
-  if (has_linear) return ForceCharacteristic<double>::linear(non_negative(t, linear_key, linear_unit));
+  if (has_linear) return ForceCharacteristic<double>::linear(ranged(t, linear_key, linear_range));
   if (!has_table) {
     if (required)
       t.fail_missing(linear_key, "a number" + unit_suffix(linear_unit) + " (or " +
@@ -791,6 +831,12 @@ ForceCharacteristic<double> characteristic(const TableReader& t, std::string_vie
       fail_expectation(t.source(), row_path, "a pair [x, F]", describe_found(*rows.get(i)));
     xs.push_back(number_from(*row->get(0), t.source(), indexed_path(row_path, 0), x_unit));
     fs.push_back(number_from(*row->get(1), t.source(), indexed_path(row_path, 1), "N"));
+    if (!x_range.contains(xs.back()))
+      fail_expectation(t.source(), indexed_path(row_path, 0), range_text(x_range),
+                       format_number(xs.back()));
+    if (!physical_ranges::table_force_N.contains(fs.back()))
+      fail_expectation(t.source(), indexed_path(row_path, 1),
+                       range_text(physical_ranges::table_force_N), format_number(fs.back()));
     if (i > 0 && !(xs[i] > xs[i - 1]))
       fail_expectation(t.source(), indexed_path(row_path, 0),
                        "x greater than the previous row's " + format_number(xs[i - 1]),
@@ -819,9 +865,10 @@ const std::vector<ElementReader>& element_readers() {
        true,
        [](const TableReader& t, const ElementEnds& ends) -> ElementSpec {
          SpringDamper3d<double> e;
-         e.stiffness_N_per_m = non_negative_each(t, "stiffness_N_per_m", "N/m");
-         e.damping_N_s_per_m = non_negative_each(t, "damping_N_s_per_m", "N s/m");
-         e.actuator_force_N = t.vector3_or("actuator_force_N", "N", Eigen::Vector3d::Zero());
+         e.stiffness_N_per_m = ranged_each(t, "stiffness_N_per_m", physical_ranges::stiffness_N_per_m);
+         e.damping_N_s_per_m = ranged_each(t, "damping_N_s_per_m", physical_ranges::damping_N_s_per_m);
+         e.actuator_force_N = ranged_each(t, "actuator_force_N", physical_ranges::actuator_force_N,
+                                          Eigen::Vector3d::Zero());
          return with_ends(e, ends);
        }},
       {RotationalSpringDamper<double>::kType,
@@ -829,9 +876,13 @@ const std::vector<ElementReader>& element_readers() {
        false,
        [](const TableReader& t, const ElementEnds& ends) -> ElementSpec {
          RotationalSpringDamper<double> e;
-         e.stiffness_N_m_per_rad = non_negative_each(t, "stiffness_N_m_per_rad", "N m/rad");
-         e.damping_N_m_s_per_rad = non_negative_each(t, "damping_N_m_s_per_rad", "N m s/rad");
-         e.actuator_moment_N_m = t.vector3_or("actuator_moment_N_m", "N m", Eigen::Vector3d::Zero());
+         e.stiffness_N_m_per_rad =
+             ranged_each(t, "stiffness_N_m_per_rad", physical_ranges::stiffness_N_m_per_rad);
+         e.damping_N_m_s_per_rad =
+             ranged_each(t, "damping_N_m_s_per_rad", physical_ranges::damping_N_m_s_per_rad);
+         e.actuator_moment_N_m = ranged_each(t, "actuator_moment_N_m",
+                                             physical_ranges::actuator_moment_N_m,
+                                             Eigen::Vector3d::Zero());
          return with_ends(e, ends);
        }},
       {SeriesSpringDamper<double>::kType,
@@ -839,9 +890,11 @@ const std::vector<ElementReader>& element_readers() {
        true,
        [](const TableReader& t, const ElementEnds& ends) -> ElementSpec {
          SeriesSpringDamper<double> e;
-         e.series_stiffness_N_per_m = positive(t, "series_stiffness_N_per_m", "N/m");
+         e.series_stiffness_N_per_m =
+             ranged(t, "series_stiffness_N_per_m", physical_ranges::positive_stiffness_N_per_m);
          const ForceCharacteristic<double> damper =
-             characteristic(t, "damping_N_s_per_m", "N s/m", "damper_force_velocity_table", "m/s");
+             characteristic(t, "damping_N_s_per_m", physical_ranges::damping_N_s_per_m,
+                            "damper_force_velocity_table", physical_ranges::table_velocity_m_per_s);
          if (!damper.strictly_increasing())
            t.fail(damper.is_table ? "damper_force_velocity_table" : "damping_N_s_per_m",
                   "a damper whose force strictly increases with velocity (the series element "
@@ -856,10 +909,12 @@ const std::vector<ElementReader>& element_readers() {
        true,
        [](const TableReader& t, const ElementEnds& ends) -> ElementSpec {
          LineSpringDamper<double> e;
-         e.spring = characteristic(t, "stiffness_N_per_m", "N/m", "spring_force_deflection_table",
-                                   "m", false);
-         e.damper = characteristic(t, "damping_N_s_per_m", "N s/m", "damper_force_velocity_table",
-                                   "m/s", false);
+         e.spring = characteristic(t, "stiffness_N_per_m", physical_ranges::stiffness_N_per_m,
+                                   "spring_force_deflection_table",
+                                   physical_ranges::table_deflection_m, false);
+         e.damper = characteristic(t, "damping_N_s_per_m", physical_ranges::damping_N_s_per_m,
+                                   "damper_force_velocity_table",
+                                   physical_ranges::table_velocity_m_per_s, false);
          return with_ends(e, ends);
        }},
       {BumpStop<double>::kType,
@@ -872,11 +927,13 @@ const std::vector<ElementReader>& element_readers() {
          if (!(axis.norm() > 0.0) || !axis.allFinite())
            t.fail("axis", "a non-zero direction in body 1's frame", format_vector(axis));
          e.axis = axis.normalized();
-         e.clearance_m = non_negative(t, "clearance_m", "m");
-         e.stiffness_N_per_m = positive(t, "stiffness_N_per_m", "N/m");
-         e.progressive_stiffness_N_per_m3 =
-             non_negative(t, "progressive_stiffness_N_per_m3", "N/m^3", 0.0);
-         e.contact_smoothing_m = positive(t, "contact_smoothing_m", "m", 5e-4);
+         e.clearance_m = ranged(t, "clearance_m", physical_ranges::clearance_m);
+         e.stiffness_N_per_m =
+             ranged(t, "stiffness_N_per_m", physical_ranges::positive_stiffness_N_per_m);
+         e.progressive_stiffness_N_per_m3 = ranged(
+             t, "progressive_stiffness_N_per_m3", physical_ranges::progressive_stiffness_N_per_m3, 0.0);
+         e.contact_smoothing_m =
+             ranged(t, "contact_smoothing_m", physical_ranges::smoothing_length_m, 5e-4);
          return with_ends(e, ends);
        }},
       {TractionRod<double>::kType,
@@ -884,8 +941,10 @@ const std::vector<ElementReader>& element_readers() {
        true,
        [](const TableReader& t, const ElementEnds& ends) -> ElementSpec {
          TractionRod<double> e;
-         e.stiffness_N_per_m = positive(t, "stiffness_N_per_m", "N/m");
-         e.damping_N_s_per_m = non_negative(t, "damping_N_s_per_m", "N s/m", 0.0);
+         e.stiffness_N_per_m =
+             ranged(t, "stiffness_N_per_m", physical_ranges::positive_stiffness_N_per_m);
+         e.damping_N_s_per_m =
+             ranged(t, "damping_N_s_per_m", physical_ranges::damping_N_s_per_m, 0.0);
          return with_ends(e, ends);
        }},
       {AntiRollBar<double>::kType,
@@ -893,8 +952,10 @@ const std::vector<ElementReader>& element_readers() {
        true,
        [](const TableReader& t, const ElementEnds& ends) -> ElementSpec {
          AntiRollBar<double> e;
-         e.roll_stiffness_N_m_per_rad = positive(t, "roll_stiffness_N_m_per_rad", "N m/rad");
-         e.link_half_spacing_m = positive(t, "link_half_spacing_m", "m");
+         e.roll_stiffness_N_m_per_rad = ranged(t, "roll_stiffness_N_m_per_rad",
+                                               physical_ranges::positive_stiffness_N_m_per_rad);
+         e.link_half_spacing_m =
+             ranged(t, "link_half_spacing_m", physical_ranges::link_half_spacing_m);
          return with_ends(e, ends);
        }},
   };
@@ -947,12 +1008,15 @@ ElementList read_elements(const TableReader& top) {
     const TableReader element = any.with_keys(keys, "a " + std::string(reader.type));
     ElementEnds ends;
     ends.name = element.text("name");
+    // Checked here, before mirroring appends "_left" / "_right".
+    if (const std::optional<std::string> problem = name_problem(ends.name))
+      element.fail("name", kNameExpectation, *problem);
     ends.body1_name = element.text("body1");
     ends.body2_name = element.text("body2");
-    ends.point1_m = reader.points_required ? element.vector3("point1_m", "m")
-                                           : element.vector3_or("point1_m", "m", Eigen::Vector3d::Zero());
-    ends.point2_m = reader.points_required ? element.vector3("point2_m", "m")
-                                           : element.vector3_or("point2_m", "m", Eigen::Vector3d::Zero());
+    const std::optional<Eigen::Vector3d> no_point =
+        reader.points_required ? std::nullopt : std::optional(Eigen::Vector3d::Zero().eval());
+    ends.point1_m = ranged_each(element, "point1_m", physical_ranges::coordinate_m, no_point);
+    ends.point2_m = ranged_each(element, "point2_m", physical_ranges::coordinate_m, no_point);
     const ElementSpec spec = reader.read(element, ends);
     if (element.flag_or("mirror_lateral", false)) {
       for (const ElementSpec& half : mirrored_pair(spec)) {
@@ -1051,30 +1115,47 @@ class SceneChecker {
                          std::string_view found) const {
     fail_expectation(source_, path, expected, found);
   }
-  void require_positive(std::string_view path, double value, std::string_view unit) const {
-    if (!(value > 0))
-      fail(path, "a positive number (" + std::string(unit) + ")", format_number(value));
+  // Every number in its physical range (scene/physical_ranges.hpp).
+  void require_in(std::string_view path, double value, const PhysicalRange& range) const {
+    if (!range.contains(value)) fail(path, range_text(range), format_number(value));
   }
-  void require_non_negative(std::string_view path, double value, std::string_view unit) const {
-    if (!(value >= 0))
-      fail(path, "a number >= 0 (" + std::string(unit) + ")", format_number(value));
+  void require_each_in(std::string_view path, const Eigen::Vector3d& values,
+                       const PhysicalRange& range) const {
+    for (Eigen::Index i = 0; i < 3; ++i)
+      require_in(indexed_path(path, size_t(i)), values(i), range);
   }
-  void require_non_negative_each(std::string_view path, const Eigen::Vector3d& values,
-                                 std::string_view unit) const {
-    if (!(values.array() >= 0).all())
-      fail(path, "three numbers >= 0 (" + std::string(unit) + ")", format_vector(values));
+  void check_name(std::string_view path, const std::string& name) const {
+    if (const std::optional<std::string> problem = name_problem(name))
+      fail(path, kNameExpectation, *problem);
   }
 
   void check_scene_numbers() const {
-    require_non_negative("scene.gravity_m_per_s2", scene_.gravity_m_per_s2, "m/s2");
+    namespace r = physical_ranges;
+    check_name("scene.name", scene_.name);
+    require_in("scene.gravity_m_per_s2", scene_.gravity_m_per_s2, r::gravity_m_per_s2);
+    require_in("scene.reference_arc_length_m", scene_.reference_arc_length_m, r::arc_length_m);
   }
 
   void check_simulation() const {
+    namespace r = physical_ranges;
     const SimulationSpec& simulation = scene_.simulation;
-    require_positive("simulation.t_end_s", simulation.t_end_s, "s");
-    require_positive("simulation.output_interval_s", simulation.output_interval_s, "s");
-    require_positive("simulation.relative_tolerance", simulation.relative_tolerance, "1");
-    require_positive("simulation.absolute_tolerance", simulation.absolute_tolerance, "1");
+    require_in("simulation.t_end_s", simulation.t_end_s, r::t_end_s);
+    require_in("simulation.output_interval_s", simulation.output_interval_s, r::output_interval_s);
+    require_in("simulation.relative_tolerance", simulation.relative_tolerance,
+               r::relative_tolerance);
+    require_in("simulation.absolute_tolerance", simulation.absolute_tolerance,
+               r::absolute_tolerance);
+    // The integrator would refuse the run later (integrate/integrator.hpp);
+    // say it here, with the keys, before any model is built.
+    const double outputs = std::ceil(simulation.t_end_s / simulation.output_interval_s - 1e-9);
+    if (!(outputs <= r::kMaxOutputs))
+      fail("simulation.output_interval_s",
+           "at most " + format_number(r::kMaxOutputs) +
+               " stored outputs (t_end_s / output_interval_s; lengthen output_interval_s or "
+               "shorten t_end_s)",
+           "t_end_s = " + format_number(simulation.t_end_s) + " s / output_interval_s = " +
+               format_number(simulation.output_interval_s) + " s = " + format_number(outputs) +
+               " outputs");
   }
 
   void check_cant(std::string_view path, double cant_m) const {
@@ -1085,18 +1166,24 @@ class SceneChecker {
   }
 
   void check_track() const {
+    namespace r = physical_ranges;
     const TrackSpec& track = scene_.track;
-    require_positive("track.rail_contact_distance_m", track.rail_contact_distance_m, "m");
+    require_in("track.rail_contact_distance_m", track.rail_contact_distance_m,
+               r::rail_contact_distance_m);
+    require_in("track.start_x_m", track.start_x_m, r::track_position_m);
+    require_in("track.start_y_m", track.start_y_m, r::track_position_m);
+    require_in("track.start_z_m", track.start_z_m, r::track_position_m);
+    require_in("track.start_heading_rad", track.start_heading_rad, r::heading_rad);
+    require_in("track.start_curvature_per_m", track.start_curvature_per_m, r::curvature_per_m);
     check_cant("track.start_cant_m", track.start_cant_m);
     if (track.segments.empty())
       fail("track.segments", "at least one segment [[track.segments]]", "none");
     for (size_t i = 0; i < track.segments.size(); ++i) {
       const std::string path = indexed_path("track.segments", i);
-      require_positive(child_path(path, "length_m"), track.segments[i].length_m, "m");
+      require_in(child_path(path, "length_m"), track.segments[i].length_m, r::segment_length_m);
       check_cant(child_path(path, "end_cant_m"), track.segments[i].end_cant_m);
-      if (!std::isfinite(track.segments[i].end_curvature_per_m))
-        fail(child_path(path, "end_curvature_per_m"), "a finite number (1/m)",
-             format_number(track.segments[i].end_curvature_per_m));
+      require_in(child_path(path, "end_curvature_per_m"), track.segments[i].end_curvature_per_m,
+                 r::curvature_per_m);
     }
   }
 
@@ -1104,6 +1191,10 @@ class SceneChecker {
     for (size_t i = 0; i < scene_.contacts.size(); ++i) {
       const std::string& name = scene_.contacts[i].name;
       if (name.empty()) fail(indexed_path("contacts", i), "a named contact", "an empty name");
+      if (const std::optional<std::string> problem = name_problem(name))
+        fail(indexed_path("contacts", i), "a contact name of 1 to " +
+             std::to_string(physical_ranges::kMaxNameBytes) + " bytes without control characters",
+             *problem);
       for (size_t j = 0; j < i; ++j)
         if (scene_.contacts[j].name == name)
           fail(contact_path(scene_.contacts[i]), "a unique contact name", quoted(name) + " twice");
@@ -1117,31 +1208,49 @@ class SceneChecker {
         !(contact.cone_angle_rad > 0 && contact.cone_angle_rad < 0.5))
       fail(at("cone_angle_rad"), "a cone angle in (0, 0.5) rad",
            format_number(contact.cone_angle_rad));
+    namespace r = physical_ranges;
     if (contact.geometry == ContactGeometryKind::linear_conicity)
-      require_positive(at("conicity"), contact.conicity, "1");
-    require_positive(at("half_contact_distance_m"), contact.half_contact_distance_m, "m");
-    require_positive(at("nominal_rolling_radius_m"), contact.nominal_rolling_radius_m, "m");
-    require_positive(at("flange_clearance_m"), contact.flange_clearance_m, "m");
-    require_non_negative(at("normal_damping_N_s_per_m"), contact.normal_damping_N_s_per_m, "N s/m");
-    require_positive(at("rail_head_transverse_radius_m"), contact.rail_head_transverse_radius_m,
-                     "m");
-    require_positive(at("wheel_young_modulus_Pa"), contact.wheel_young_modulus_Pa, "Pa");
-    require_positive(at("rail_young_modulus_Pa"), contact.rail_young_modulus_Pa, "Pa");
+      require_in(at("conicity"), contact.conicity, r::conicity);
+    require_in(at("half_contact_distance_m"), contact.half_contact_distance_m,
+               r::half_contact_distance_m);
+    check_contact_distances(at("half_contact_distance_m"), contact.half_contact_distance_m);
+    require_in(at("nominal_rolling_radius_m"), contact.nominal_rolling_radius_m,
+               r::rolling_radius_m);
+    require_in(at("flange_clearance_m"), contact.flange_clearance_m, r::flange_clearance_m);
+    require_in(at("normal_damping_N_s_per_m"), contact.normal_damping_N_s_per_m,
+               r::damping_N_s_per_m);
+    require_in(at("rail_head_transverse_radius_m"), contact.rail_head_transverse_radius_m,
+               r::rail_head_radius_m);
+    require_in(at("wheel_young_modulus_Pa"), contact.wheel_young_modulus_Pa, r::young_modulus_Pa);
+    require_in(at("rail_young_modulus_Pa"), contact.rail_young_modulus_Pa, r::young_modulus_Pa);
     check_poisson_ratio(at("wheel_poisson_ratio"), contact.wheel_poisson_ratio);
     check_poisson_ratio(at("rail_poisson_ratio"), contact.rail_poisson_ratio);
     if (contact.normal == NormalForceKind::prescribed)
-      require_positive(at("prescribed_wheel_load_N"), contact.prescribed_wheel_load_N, "N");
+      require_in(at("prescribed_wheel_load_N"), contact.prescribed_wheel_load_N, r::wheel_load_N);
     if (contact.normal == NormalForceKind::prescribed && contact.normal_damping_N_s_per_m != 0.0)
       fail(at("normal_damping_N_s_per_m"), "0 with normal = 'prescribed' (the damper acts on "
            "the Hertz penetration rate; a prescribed load has none)",
            format_number(contact.normal_damping_N_s_per_m));
     if (contact.tangential == TangentialForceKind::constant) {
-      require_non_negative(at("f11_N"), contact.f11_N, "N");
-      require_non_negative(at("f22_N"), contact.f22_N, "N");
-      require_non_negative(at("f33_N_m2"), contact.f33_N_m2, "N m2");
-      if (!std::isfinite(contact.f23_N_m))
-        fail(at("f23_N_m"), "a finite number (N m)", format_number(contact.f23_N_m));
+      require_in(at("f11_N"), contact.f11_N, r::creep_coefficient_N);
+      require_in(at("f22_N"), contact.f22_N, r::creep_coefficient_N);
+      require_in(at("f33_N_m2"), contact.f33_N_m2, r::creep_coefficient_N_m2);
+      require_in(at("f23_N_m"), contact.f23_N_m, r::creep_coefficient_N_m);
     }
+  }
+
+  // e0 (the contact's half distance between the wheel contact points) and D
+  // (the track's distance between the rail contact points, which sets the
+  // cant angle asin(cant / D)) describe the same points: they must agree.
+  // 5 % admits rounding (1435 mm gauge: 2 e0 = 1.5 m, D = 1.5 m or 1.505 m).
+  void check_contact_distances(std::string_view path, double e0) const {
+    const double D = scene_.track.rail_contact_distance_m;
+    if (!(std::abs(2.0 * e0 - D) <= 0.05 * D))
+      fail(path,
+           "half of track.rail_contact_distance_m = " + format_number(D) +
+               " m within 5 % (both are the distance between the contact points; the cant "
+               "angle uses D, the contact geometry 2 e0)",
+           format_number(e0) + " m (2 e0 = " + format_number(2.0 * e0) + " m)");
   }
 
   void check_poisson_ratio(std::string_view path, double ratio) const {
@@ -1154,6 +1263,7 @@ class SceneChecker {
       const std::string path = child_path(body_path(i), "name");
       const std::string& name = scene_.bodies[i].name;
       if (name.empty()) fail(path, "a non-empty name", "''");
+      check_name(path, name);
       if (name == kTrackBodyName)
         fail(path, "a name other than 'track' (reserved: elements use it for the track frame)",
              quoted(name));
@@ -1167,10 +1277,23 @@ class SceneChecker {
   void check_body(size_t index) const {
     const BodySpec& body = scene_.bodies[index];
     const std::string path = body_path(index);
-    require_positive(child_path(path, "mass_kg"), body.mass_kg, "kg");
+    namespace r = physical_ranges;
+    require_in(child_path(path, "mass_kg"), body.mass_kg, r::mass_kg);
+    require_each_in(child_path(path, "inertia_kg_m2"), body.inertia_kg_m2, r::inertia_kg_m2);
     check_inertia(child_path(path, "inertia_kg_m2"), body);
-    if (body.is_wheelset)
+    require_each_in(child_path(path, "position_m"), body.position_m, r::coordinate_m);
+    require_in(child_path(path, "track_offset_m"), body.track_offset_m, r::track_offset_m);
+    for (int c = 0; c < kCoordinatesPerBody; ++c) {
+      const bool angle = c >= 3;
+      require_in(child_path(child_path(path, "initial_offset"), kOffsetKeys[c].key),
+                 body.initial_offset[c], angle ? r::offset_rad : r::offset_m);
+      require_in(child_path(child_path(path, "initial_rate"), kRateKeys[c].key),
+                 body.initial_rate[c], angle ? r::rate_rad_per_s : r::rate_m_per_s);
+    }
+    if (body.is_wheelset) {
       check_wheelset_contact(child_path(path, "contact"), body);
+      check_wheelset_position(child_path(path, "position_m"), body);
+    }
     else if (!body.contact.empty())
       fail(child_path(path, "contact"),
            "no contact on a rigid_body (only wheelsets touch the rails)", quoted(body.contact));
@@ -1194,6 +1317,29 @@ class SceneChecker {
     }
   }
 
+  // A wheelset's nominal position is on the rails: its centre within the
+  // flange clearance of the track centre and at its rolling radius above
+  // the rail plane (10 %). A wheelset placed at y = -1 m failed deep in the
+  // model ("relative curvatures must be positive") or found no equilibrium.
+  void check_wheelset_position(const std::string& path, const BodySpec& wheelset) const {
+    const ContactSpec* contact = find_contact(wheelset.contact);
+    if (!contact) return;
+    const double y = wheelset.position_m.y(), z = wheelset.position_m.z();
+    const double clearance = contact->flange_clearance_m, r0 = contact->nominal_rolling_radius_m;
+    if (!(std::abs(y) <= clearance))
+      fail(indexed_path(path, 1),
+           "a wheelset's nominal lateral position within the flange clearance of the track "
+           "centre, [-" + format_number(clearance) + ", " + format_number(clearance) +
+               "] m (contacts." + contact->name + ".flange_clearance_m)",
+           format_number(y));
+    if (!(std::abs(z - r0) <= 0.1 * r0))
+      fail(indexed_path(path, 2),
+           "a wheelset's axle height at its rolling radius above the rail plane, " +
+               format_number(r0) + " m within 10 % (contacts." + contact->name +
+               ".nominal_rolling_radius_m)",
+           format_number(z));
+  }
+
   void check_wheelset_contact(std::string_view path, const BodySpec& wheelset) const {
     if (wheelset.contact.empty())
       fail(path, "the name of a [contacts.<name>] table for a wheelset", "nothing");
@@ -1211,6 +1357,10 @@ class SceneChecker {
     const std::string path =
         index < element_paths_.size() ? element_paths_[index] : indexed_path("elements", index);
     if (element.name.empty()) fail(child_path(path, "name"), "a non-empty name", "''");
+    // (+ 6: a mirrored element's "_right"; the file's name was checked by the reader.)
+    if (const std::optional<std::string> problem =
+            name_problem(element.name, physical_ranges::kMaxNameBytes + 6))
+      fail(child_path(path, "name"), kNameExpectation, *problem);
     if (element.body1_name != kTrackBodyName && !has_body(element.body1_name))
       throw unknown_body(child_path(path, "body1"), element.body1_name, "; or 'track'");
     if (element.body2_name == kTrackBodyName)
@@ -1242,7 +1392,7 @@ class SceneChecker {
         fail(path, "> 0 when creep forces are on (creepages are divided by the speed)",
              format_number(scene_.speed_m_per_s));
     }
-    require_non_negative(path, scene_.speed_m_per_s, "m/s");
+    require_in(path, scene_.speed_m_per_s, physical_ranges::speed_m_per_s);
   }
 
   // Each body's own track frame starts at reference + offset: it must be on the track.

@@ -60,7 +60,10 @@ int write_track_blocks(std::ostream& out, const CriticalSpeedResult& r,
   int blocks = 0;
   out << std::setprecision(10) << "# speed_m_s real_per_s frequency_hz damping_ratio, one block "
                                   "per tracked mode\n";
-  for (const auto& [id, points] : tracks) {
+  for (const auto& track : tracks) {
+    // (Not a structured binding: clang 14 cannot capture one in the lambda.)
+    const int id = track.first;
+    const auto& points = track.second;
     if (points.size() < 2) continue;
     out << "# track " << id << "\n";
     for (const auto& p : points) {
@@ -153,6 +156,11 @@ void write_json(std::ostream& out, const Model& model, const CriticalSpeedResult
     JsonWriter j(out);
     j.begin_object().field("scene", model.name).field("source", model.source_path);
     j.key("speed_range_m_s").begin_array().value(r.from_m_per_s).value(r.to_m_per_s).end_array();
+    j.field("partial", r.partial);
+    if (r.partial)
+      j.field("partial_reason", r.partial_reason);
+    else
+      j.key("partial_reason").null();
     j.field("stable_in_range", r.stable_in_range).field("unstable_at_start", r.unstable_at_start);
     if (r.equilibrium_lost_at_m_per_s > 0.0)
       j.field("equilibrium_lost_at_m_s", r.equilibrium_lost_at_m_per_s)
@@ -224,6 +232,10 @@ void write_markdown(std::ostream& md_out, const Model& model, const CriticalSpee
        << r.to_m_per_s << " m/s, " << (r.grid.empty() ? 0 : r.grid.front().linear.A.rows())
        << " states after removing " << (r.grid.empty() ? 0 : r.grid.front().linear.removed_states.size())
        << " cyclic coordinates, eigen-solver " << solver << ".\n\n";
+    if (r.partial)
+      md << "**Partial result**: the run could not finish what was asked; what it found is "
+            "below. Reason: "
+         << md_text(r.partial_reason) << "\n\n";
     if (r.equilibrium_lost_at_m_per_s > 0.0)
       md << "No steady state at " << r.equilibrium_lost_at_m_per_s
          << " m/s and above (" << md_text(r.equilibrium_error) << "); the analysis covers the speeds "
@@ -336,7 +348,9 @@ void print_critical_speed_summary(std::ostream& out, const Model& model,
         << std::defaultfloat << std::setprecision(5) << ", frequency " << m.frequency_hz
         << " Hz, mode " << m.name << "\n";
   }
-  if (r.equilibrium_lost_at_m_per_s > 0.0)
+  if (r.partial)
+    out << "partial result: " << r.partial_reason << "\n";
+  else if (r.equilibrium_lost_at_m_per_s > 0.0)
     out << "no steady state from " << r.equilibrium_lost_at_m_per_s
         << " m/s: " << r.equilibrium_error << "\n";
   for (const StabilityPoint& p : r.grid)

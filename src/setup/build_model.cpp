@@ -2,6 +2,7 @@
 
 #include "equilibrium/equilibrium.hpp"
 #include "model/equations_of_motion.hpp"
+#include "setup/model_error_context.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -44,7 +45,12 @@ std::vector<Eigen::Vector3d> solve_gravity_preloads(const SceneSpec& scene) {
   const std::vector<size_t>& kept = gravity.kept;
   const Model twin = assemble_model(gravity.spec);
   const double V = scene.speed_m_per_s;
-  const EquilibriumResult sagged = solve_equilibrium(twin, V, lowered_nominal_state(twin, V));
+  EvaluationPlace place{"static sag on straight, level track for the suspension preloads "
+                        "(preload = 'balance_gravity_at_nominal')",
+                        V};
+  place.on_scene_track = false;
+  const EquilibriumResult sagged = with_model_context(
+      twin, place, [&] { return solve_equilibrium(twin, V, lowered_nominal_state(twin, V)); });
   Workspace<double> ws(twin);
   compute_all_body_motions<double>(twin, ws, 0.0, V, sagged.state);
   std::vector<Eigen::Vector3d> preloads(scene.elements.size(), Eigen::Vector3d::Zero());

@@ -1,5 +1,8 @@
 #include "stability/speed_analysis.hpp"
 
+#include "setup/model_error_context.hpp"
+
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <sstream>
@@ -49,14 +52,26 @@ StabilityPoint SpeedStability::at(double speed_m_per_s) {
   p.speed_m_per_s = speed_m_per_s;
   EquilibriumOptions eq_opt;
   eq_opt.time_s = options_.time_s;
-  p.equilibrium = solve_equilibrium(model, speed_m_per_s, guess, eq_opt);
+  // Each stage names itself, the speed and the place in its errors
+  // (setup/model_error_context.hpp).
+  const double t = options_.time_s;
+  p.equilibrium = with_model_context(model, {"steady state", speed_m_per_s, t}, [&] {
+    return solve_equilibrium(model, speed_m_per_s, guess, eq_opt);
+  });
   last_equilibrium_ = p.equilibrium.state;
   last_speed_ = speed_m_per_s;
   LinearizationOptions lin_opt;
   lin_opt.time_s = options_.time_s;
-  p.linear = linearize(model, speed_m_per_s, p.equilibrium.state, lin_opt);
+  p.linear = with_model_context(
+      model, {"linearisation", speed_m_per_s, t, &p.equilibrium.state},
+      [&] { return linearize(model, speed_m_per_s, p.equilibrium.state, lin_opt); });
   p.solver_used = resolved_solver(options_.solver, int(p.linear.A.rows()));
-  p.modes = describe_modes(model, p.linear, solve_eigen(p.linear.A, options_));
+  EvaluationPlace eigen_place{"eigen-analysis", speed_m_per_s, t, &p.equilibrium.state};
+  eigen_place.matrix = &p.linear.A;
+  eigen_place.matrix_state_names = &p.linear.state_names;
+  p.modes = with_model_context(model, eigen_place, [&] {
+    return describe_modes(model, p.linear, solve_eigen(p.linear.A, options_));
+  });
   p.least_stable = least_stable_mode(p.modes, options_.max_frequency_hz);
   for (int i = 0; i < int(p.modes.size()); ++i)
     if (!p.modes[i].neutral && p.modes[i].frequency_hz > options_.max_frequency_hz &&
@@ -122,6 +137,14 @@ CriticalSpeedResult find_critical_speed(const Model& model, const Eigen::VectorX
   if (r.grid.empty())
     throw std::runtime_error("critical speed: no steady state even at the lowest speed: " +
                              r.equilibrium_error);
+  if (r.equilibrium_lost_at_m_per_s > 0.0) {
+    std::ostringstream why;
+    why << "the speed grid stopped at " << r.equilibrium_lost_at_m_per_s
+        << " m/s (no steady state there), below the requested " << options.to_m_per_s
+        << " m/s: " << r.equilibrium_error;
+    r.partial = true;
+    r.partial_reason = why.str();
+  }
   if (crossing < 0) {
     r.stable_in_range = r.equilibrium_lost_at_m_per_s == 0.0;
   } else if (crossing == 0) {
@@ -136,10 +159,26 @@ CriticalSpeedResult find_critical_speed(const Model& model, const Eigen::VectorX
     SpeedStability refine(model, lo.equilibrium.state, lo.speed_m_per_s, options.stability);
     while (hi.speed_m_per_s - lo.speed_m_per_s > options.tolerance_m_per_s) {
       const double mid = 0.5 * (lo.speed_m_per_s + hi.speed_m_per_s);
-      StabilityPoint p = refine.at(mid);
+      StabilityPoint p;
+      try {
+        p = refine.at(mid);
+      } catch (const std::runtime_error& e) {
+        // Keep the bracket found so far: the crossing lies between two
+        // speeds that both have a steady state, only less tightly bracketed.
+        std::ostringstream why;
+        why << "the bisection stopped at " << mid << " m/s (no steady state there) with the "
+            << "crossing bracketed in [" << lo.speed_m_per_s << ", " << hi.speed_m_per_s
+            << "] m/s instead of " << options.tolerance_m_per_s << " m/s: " << e.what();
+        r.partial = true;
+        r.partial_reason += (r.partial_reason.empty() ? "" : "; ") + why.str();
+        if (options.progress) options.progress("  bisection stopped: " + why.str());
+        break;
+      }
       report(p);
       (p.max_real_part > 0.0 ? hi : lo) = std::move(p);
     }
+    r.speed_tolerance_m_per_s = std::max(options.tolerance_m_per_s,
+                                         hi.speed_m_per_s - lo.speed_m_per_s);
     // Interpolate the crossing linearly inside the final bracket.
     const double a = lo.max_real_part, b = hi.max_real_part;
     r.critical_speed_m_per_s =

@@ -88,6 +88,11 @@ struct CriticalSpeedResult {
   // the speeds below it.
   double equilibrium_lost_at_m_per_s = 0.0;  // 0: never lost
   std::string equilibrium_error;
+  // The run could not finish what it was asked (the grid stopped below the
+  // top speed, or a bisection midpoint had no steady state): what was found
+  // is kept and reported, marked partial, with the reason.
+  bool partial = false;
+  std::string partial_reason;
 };
 
 struct CriticalSpeedOptions {

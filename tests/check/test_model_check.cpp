@@ -259,10 +259,16 @@ TEST(ModelCheckWarning, ContactDistanceMismatch) {
   EXPECT_TRUE(r.has_warning("contact_distance_mismatch")) << warning_list(r);
 }
 
+// A height given in millimetres (1057.5 for 1.0575 m) is refused by the
+// scene reader's range ([-100, 100] m); between the check's 50 m and that
+// range, the check warns that the unit looks wrong.
 TEST(ModelCheckWarning, PositionInMillimetres) {
+  EXPECT_THROW(check_mutated("thesis_bogie_tangent",
+                             {{"position_m = [0.0, 0.0, 1.0575]", "position_m = [0.0, 0.0, 1057.5]"}}),
+               SceneError);
   const ModelCheckReport r = check_mutated(
       "thesis_bogie_tangent",
-      {{"position_m = [0.0, 0.0, 1.0575]", "position_m = [0.0, 0.0, 1057.5]"}});
+      {{"position_m = [0.0, 0.0, 1.0575]", "position_m = [0.0, 0.0, 60.0]"}});
   EXPECT_TRUE(r.has_warning("unit_looks_wrong")) << warning_list(r);
 }
 

@@ -147,7 +147,7 @@ TEST(CliHostile, NumericFlagsOutOfRangeNameTheFlagValueAndRange) {
 
 TEST(CliHostile, SceneNamesCannotLeaveTheOutputFolder) {
   for (const std::string& name : {std::string("../evil"), std::string("/tmp/../../evil"),
-                                  std::string(4000, 'n')}) {
+                                  std::string(100, 'n')}) {
     const fs::path dir = fresh_dir("escape");
     const fs::path scene = hostile_scene(dir, name);
     fs::create_directories(dir / "work");
@@ -165,6 +165,18 @@ TEST(CliHostile, SceneNamesCannotLeaveTheOutputFolder) {
     EXPECT_TRUE(test::is_valid_json(read_text(dir / "work/out" / json_name)));
     fs::remove_all(dir);
   }
+  // A 4,000-character name (it used to fail late with "cannot write") is
+  // refused by the scene reader, naming the key, before anything is written.
+  const fs::path dir = fresh_dir("escape_long");
+  const fs::path scene = hostile_scene(dir, std::string(4000, 'n'));
+  const auto run = run_railstab({"eigen", scene.string(), "--out", "out"}, dir);
+  EXPECT_NE(run.exit_code, 0);
+  EXPECT_NE(run.output.find("scene.name: expected a name of 1 to 100 bytes without control "
+                            "characters, got a name of 4000 bytes"),
+            std::string::npos)
+      << run.output;
+  EXPECT_FALSE(fs::exists(dir / "out"));
+  fs::remove_all(dir);
 }
 
 // --- shell and gnuplot injection ---------------------------------------------------
@@ -204,7 +216,9 @@ TEST(CliHostile, NamesAndOutFolderRunNoCommands) {
 
 TEST(CliHostile, HostileBodyNamesGiveValidCsvAndJson) {
   const fs::path dir = fresh_dir("names");
-  const std::string body = "w,1\"q\"\t\x01\nx";
+  // Control characters are refused by the scene reader (tests/hostile/
+  // test_scene_ranges.cpp); every other character must survive CSV and JSON.
+  const std::string body = "w,1\"q\";|x\\";
   const fs::path scene = hostile_scene(dir, "names", body);
   auto run = run_railstab(
       {"simulate", scene.string(), "--t-end", "0.2", "--no-error-estimate", "--out", "out"}, dir);

@@ -1,0 +1,56 @@
+#!/usr/bin/env bash
+# The whole test suite under AddressSanitizer + UndefinedBehaviorSanitizer,
+# then the libFuzzer harnesses (fuzz/) for a bounded time with a seed corpus
+# made from cases/. Built with clang into build-sanitize/ (one build serves
+# both: the library is instrumented for the sanitizers and for coverage).
+# Any sanitizer report, test failure or fuzzer finding fails the script.
+#
+#   RAILSTAB_FUZZ_SECONDS   time per harness (default 30: 60 s in total)
+#   RAILSTAB_SANITIZE_SKIP  ctest -E regex of tests left out under the
+#                           sanitizers (default below: the long time-domain
+#                           runs, 10-20 s each in Release and 100-200 s under
+#                           ASan, and the tests that assert a CPU time or a
+#                           CPU budget, which the sanitizers' ~10x slowdown
+#                           breaks; the Release suite runs them all)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+fuzz_seconds=${RAILSTAB_FUZZ_SECONDS:-30}
+long_runs='ContactDamping\.VerifyInTheArc|ThesisBogie\.ShiftsOutwardsInCurve|ExtremeConservative|Extreme/ExtremeRun|Verification\.|ErrorEstimate\.|ExtremeNearCritical'
+timed='ContactTables\.BuildTakesUnderOneSecond|SundialsFlagNames|WorkLimits'
+skip=${RAILSTAB_SANITIZE_SKIP:-"$long_runs|$timed"}
+build=build-sanitize
+
+CC=clang CXX=clang++ cmake -S . -B $build -DCMAKE_BUILD_TYPE=Release -DRAILSTAB_SANITIZE=ON >/dev/null
+cmake --build $build -j2 --target railstab_tests railstab fuzz_scene fuzz_profile
+
+export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1
+export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+echo "== test suite under ASan + UBSan (left out: $skip)" >&2
+(cd $build && ctest -j2 --output-on-failure -E "$skip")
+
+echo "== libFuzzer: ${fuzz_seconds} s per harness" >&2
+run_fuzzer() {  # name, max input length, seed files...
+  local name=$1 max_len=$2; shift 2
+  local work=$build/fuzz/$name
+  rm -rf "$work" && mkdir -p "$work/corpus" "$work/seeds" "$work/artifacts"
+  cp "$@" "$work/seeds/"
+  # -timeout: an input taking longer is a hang (a finding); -rss_limit_mb:
+  # runaway memory is a finding too.
+  ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
+    $build/fuzz_$name -max_total_time="$fuzz_seconds" -timeout=20 -rss_limit_mb=2048 \
+    -max_len="$max_len" -print_final_stats=1 -artifact_prefix="$work/artifacts/" \
+    "$work/corpus" "$work/seeds" 2>"$work/log" || {
+      tail -n 60 "$work/log" >&2
+      echo "fuzz_$name: FINDING (input saved in $work/artifacts/)" >&2
+      return 1
+    }
+  grep -E "stat::number_of_executed_units|stat::peak_rss_mb" "$work/log" >&2 || true
+  echo "fuzz_$name: no finding in ${fuzz_seconds} s" >&2
+}
+run_fuzzer scene 16384 cases/*.toml
+# Profile seeds: the first byte picks the reader (0 .prw, 1 .prr, 2 plain mm).
+seeds=$build/fuzz/profile_seeds && rm -rf $seeds && mkdir -p $seeds
+{ printf '\0'; cat cases/profiles/MBench_S1002_v3.prw; } > $seeds/s1002.prw
+{ printf '\1'; cat cases/profiles/MBench_UIC60_v3.prr; } > $seeds/uic60.prr
+printf '\2# y z in mm\n-30 1\n-20 0.5\n0 0\n20 -0.5\n30 -1\n' > $seeds/plain.txt
+run_fuzzer profile 65536 $seeds/*
