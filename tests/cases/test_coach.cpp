@@ -134,9 +134,12 @@ TEST(Coach, CriticalSpeedRisesWithSoftSeriesStiffness) {
 // car body settled 1.05 mm low at nominal).
 TEST(Coach, TractionRodsKeepNominalTheStaticEquilibrium) {
   SceneSpec spec = load_scene_file(kCoach);
-  for (const auto& [bogie, x_carbody] : {std::pair{"bogie1", 10.0}, std::pair{"bogie2", -10.0}}) {
+  for (const auto& bogie_and_side : {std::pair{"bogie1", 10.0}, std::pair{"bogie2", -10.0}}) {
+    // (no structured binding: clang 14 cannot capture one in the lambda below)
+    const std::string bogie = bogie_and_side.first;
+    const double x_carbody = bogie_and_side.second;
     TractionRod<double> rod;
-    rod.ends.name = std::string("traction_rod_") + bogie;
+    rod.ends.name = "traction_rod_" + bogie;
     rod.ends.body1_name = bogie;
     rod.ends.body2_name = "carbody";
     rod.ends.point1_m = Eigen::Vector3d(x_carbody > 0 ? -0.5 : 0.5, 0.0, 0.0);
