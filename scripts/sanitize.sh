@@ -11,13 +11,18 @@
 #                           runs, 10-20 s each in Release and 100-200 s under
 #                           ASan, and the tests that assert a CPU time or a
 #                           CPU budget, which the sanitizers' ~10x slowdown
-#                           breaks; the Release suite runs them all)
+#                           breaks, and the packaging tests; the Release
+#                           suite runs them all)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 fuzz_seconds=${RAILSTAB_FUZZ_SECONDS:-30}
 long_runs='ContactDamping\.VerifyInTheArc|ThesisBogie\.ShiftsOutwardsInCurve|ExtremeConservative|Extreme/ExtremeRun|Verification\.|ErrorEstimate\.|ExtremeNearCritical'
 timed='ContactTables\.BuildTakesUnderOneSecond|SundialsFlagNames|WorkLimits'
-skip=${RAILSTAB_SANITIZE_SKIP:-"$long_runs|$timed"}
+# Packaging tests (the example program, install + find_package): about the
+# Release build's install tree, not about memory errors; the Release suite
+# runs them (an ASan library cannot be linked by an uninstrumented consumer).
+packaging='^example_critical_speed$|^install_and_find_package$'
+skip=${RAILSTAB_SANITIZE_SKIP:-"$long_runs|$timed|$packaging"}
 build=build-sanitize
 
 CC=clang CXX=clang++ cmake -S . -B $build -DCMAKE_BUILD_TYPE=Release -DRAILSTAB_SANITIZE=ON >/dev/null
