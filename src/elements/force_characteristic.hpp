@@ -79,14 +79,12 @@ template <class S> struct ForceCharacteristic {
   template <class T> T force(const T& xv) const {
     if (!is_table) return lift<T>(coefficient) * xv;
     const double xd = value_of(xv);
-    const size_t n = x.size();
     if (xd <= x.front()) return T(f.front()) + T(slope.front()) * (xv - T(x.front()));
     if (xd >= x.back()) return T(f.back()) + T(slope.back()) * (xv - T(x.back()));
     const size_t i = segment(xd);
     const double h = x[i + 1] - x[i];
     const T t = (xv - T(x[i])) / T(h);
     const T t2 = t * t, t3 = t2 * t;
-    (void)n;
     // Cubic Hermite basis.
     return T(f[i]) * (T(2) * t3 - T(3) * t2 + T(1)) + T(h * slope[i]) * (t3 - T(2) * t2 + t) +
            T(f[i + 1]) * (T(-2) * t3 + T(3) * t2) + T(h * slope[i + 1]) * (t3 - t2);
