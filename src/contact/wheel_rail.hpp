@@ -47,8 +47,10 @@ template <class T> struct WheelContact {
   Vec3<T> point_I;            // contact point from the wheelset CM, in I
 };
 
-template <class T>
-WheelContact<T> evaluate_wheel_contact(const ModelContact& contact, const BodyMotion<T>& ws,
+// S: the model's parameter scalar (ParameterScalar<T>: double, or ParamDual
+// when T carries parameter derivatives).
+template <class T, class S>
+WheelContact<T> evaluate_wheel_contact(const ModelContactTpl<S>& contact, const BodyMotion<T>& ws,
                                        int side, double speed_m_per_s) {
   using std::cos;
   using std::pow;
@@ -66,8 +68,8 @@ WheelContact<T> evaluate_wheel_contact(const ModelContact& contact, const BodyMo
 
   Vec3<T> nu_I;  // from the rail into the wheel
   if (spec.geometry == ContactGeometryKind::knife_edge_cone) {
-    const double g = spec.cone_angle_rad;
-    const double tg = std::tan(g), cg = std::cos(g), sg = std::sin(g);
+    const T g = lift<T>(contact.cone_angle_rad);
+    const T tg = tan(g), cg = cos(g), sg = sin(g);
     // Wire point in the plane x_I = 0: x_I of (lambda, side e0, 0) - w vanishes.
     const T yaw = ws.q(5);
     const T lambda = w.x() - tan(yaw) * (sd * e0 - w.y());
@@ -75,14 +77,14 @@ WheelContact<T> evaluate_wheel_contact(const ModelContact& contact, const BodyMo
     const Vec3<T> wire_I = R_IT * (P_T - w);
     const T eta = wire_I.y();
     const T rho = -wire_I.z();
-    out.rolling_radius_m = T(r0) + T(tg) * (T(e0) - sd * eta);
-    out.penetration_m = (out.rolling_radius_m - rho) * T(cg);
+    out.rolling_radius_m = T(r0) + tg * (T(e0) - sd * eta);
+    out.penetration_m = (out.rolling_radius_m - rho) * cg;
     nu_I = Vec3<T>(T(0), -sd * sg, T(cg));
     // The contact point is the middle of the overlap (wheel and rail share
     // the approach), half-way from the wire point to the wheel surface.
     out.point_I = wire_I - T(0.5) * out.penetration_m * nu_I;
   } else {
-    out.rolling_radius_m = T(r0) + sd * T(spec.conicity) * w.y();
+    out.rolling_radius_m = T(r0) + sd * lift<T>(contact.conicity) * w.y();
     out.point_I = Vec3<T>(T(0), sd * e0, -out.rolling_radius_m);
     const Vec3<T> point_T = w + ws.R_TI * out.point_I;
     out.penetration_m = -point_T.z();
@@ -168,7 +170,7 @@ WheelContact<T> evaluate_wheel_contact(const ModelContact& contact, const BodyMo
   creep.f33_N_m2 = f.f33_N_m2;
   creep.speed_m_per_s = V;
   const CreepForces<T> F = std::visit(
-      [&](const auto& law) { return law.template forces<T>(creep); }, spec.creep_law);
+      [&](const auto& law) { return law.template forces<T>(creep); }, contact.creep_law);
   const T Fx = F.force_x_N;
   const T Fy = F.force_y_N;
   const T Mz = F.spin_moment_N_m;

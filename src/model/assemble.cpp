@@ -8,15 +8,6 @@ namespace railstab {
 
 namespace {
 
-ModelContact build_contact(const ContactSpec& spec) {
-  ModelContact c;
-  c.spec = spec;
-  c.materials = combine_materials(spec.wheel_young_modulus_Pa, spec.wheel_poisson_ratio,
-                                  spec.rail_young_modulus_Pa, spec.rail_poisson_ratio);
-  c.rail_curvature_B_per_m = 0.5 / spec.rail_head_transverse_radius_m;
-  return c;
-}
-
 BodyKind body_kind(const BodySpec& spec, const SceneSpec& scene) {
   if (!spec.is_wheelset) return RigidBodyKind{};
   WheelsetKind w;
@@ -59,7 +50,7 @@ Model assemble_model(const SceneSpec& scene, const std::vector<Eigen::Vector3d>&
   model.gravity_m_per_s2 = scene.gravity_m_per_s2;
   model.reference_arc_length_m = scene.reference_arc_length_m;
 
-  for (const ContactSpec& c : scene.contacts) model.contacts.push_back(build_contact(c));
+  for (const ContactSpec& c : scene.contacts) model.contacts.push_back(make_model_contact(c));
 
   for (const BodySpec& spec : scene.bodies) {
     Body body;

@@ -37,7 +37,7 @@ template <class S> struct ModelTpl {
   double gravity_m_per_s2 = 9.81;
   double reference_arc_length_m = 0.0;
   std::vector<BodyTpl<S>> bodies;
-  std::vector<ModelContact> contacts;
+  std::vector<ModelContactTpl<S>> contacts;
   std::vector<ElementTpl<S>> elements;
   int n_coordinates = 0;      // free coordinates q (and as many rates u)
   int n_internal_states = 0;  // element states z
@@ -104,7 +104,7 @@ template <class S> struct ModelTpl {
     m.gravity_m_per_s2 = gravity_m_per_s2;
     m.reference_arc_length_m = reference_arc_length_m;
     for (const BodyTpl<S>& b : bodies) m.bodies.push_back(b.template cast<S2>());
-    m.contacts = contacts;
+    for (const ModelContactTpl<S>& c : contacts) m.contacts.push_back(c.template cast<S2>());
     for (const ElementTpl<S>& e : elements)
       m.elements.push_back(std::visit(
           [](const auto& el) -> ElementTpl<S2> { return el.template cast<S2>(); }, e));

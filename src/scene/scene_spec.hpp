@@ -44,8 +44,9 @@ enum class TangentialForceKind {
 
 // The creep law: the tangential forces from the creepages and Kalker's
 // linear coefficients (contact/creep/): one type per law, one variant.
-using CreepLawSpec =
-    std::variant<LinearKalkerCreep<double>, ShenHedrickElkinsCreep<double>, PolachCreep<double>>;
+template <class S>
+using CreepLawTpl = std::variant<LinearKalkerCreep<S>, ShenHedrickElkinsCreep<S>, PolachCreep<S>>;
+using CreepLawSpec = CreepLawTpl<double>;
 
 struct ContactSpec {
   std::string name;

@@ -61,6 +61,10 @@ template <class S, class F> int visit_parameter(ModelTpl<S>& model, const std::s
                                      const std::string& field, int i, S& value) {
     if (key_matches(key, name, field, i)) f(value), ++matched;
   });
+  for (ModelContactTpl<S>& c : model.contacts)
+    c.for_each_parameter([&](const char* field, int i, S& value) {
+      if (key == "contacts." + c.spec.name + "." + indexed(field, i)) f(value), ++matched;
+    });
   return matched;
 }
 
@@ -151,6 +155,12 @@ std::vector<std::string> parameter_keys(const SceneSpec& scene) {
     const std::string key = "elements." + shown + "." + indexed(field, i);
     if (std::find(keys.begin(), keys.end(), key) == keys.end()) keys.push_back(key);
   });
+  for (const ContactSpec& spec : scene.contacts) {
+    ModelContact c = make_model_contact(spec);
+    c.for_each_parameter([&](const char* field, int i, double&) {
+      keys.push_back("contacts." + spec.name + "." + indexed(field, i));
+    });
+  }
   return keys;
 }
 
@@ -175,6 +185,12 @@ SceneSpec with_parameter(const SceneSpec& scene, const std::string& key, double 
                                    const std::string& field, int i, double& p) {
     if (key_matches(key, name, field, i)) p = value, ++matched;
   });
+  for (ContactSpec& c : out.contacts)
+    visit_contact_parameters(c, c.cone_angle_rad, c.conicity, c.creep_law,
+                             [&](const char* field, int i, double& p) {
+                               if (key == "contacts." + c.name + "." + indexed(field, i))
+                                 p = value, ++matched;
+                             });
   if (matched == 0) unknown_parameter(scene, key);
   return out;
 }

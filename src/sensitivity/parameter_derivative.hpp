@@ -18,7 +18,9 @@
 // "bodies.<body>.inertia_kg_m2[2]", "elements.<element>.<key>[i]" (vector
 // keys) or "elements.<element>.<key>" (scalar keys). A mirrored element
 // (mirror_lateral) is one scene entry: its key moves both halves.
-// Contact and creep parameters are not differentiable yet.
+// Contact parameters: "contacts.<contact>.<key>" for the cone angle or the
+// conicity (by geometry) and the creep law's friction coefficient and
+// reduction factors (by law).
 #include "linear/linearization.hpp"
 #include "model/model.hpp"
 #include "scene/scene_spec.hpp"

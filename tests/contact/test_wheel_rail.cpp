@@ -12,11 +12,9 @@ using namespace railstab;
 namespace {
 
 ModelContact thesis_contact() {
-  ModelContact c;
-  c.spec.name = "knife";
-  c.materials = combine_materials(2.1e11, 0.25, 2.1e11, 0.25);
-  c.rail_curvature_B_per_m = 0.5 / c.spec.rail_head_transverse_radius_m;
-  return c;
+  ContactSpec spec;  // defaults: the thesis' knife-edge cone, gamma = 0.1
+  spec.name = "knife";
+  return make_model_contact(spec);
 }
 
 Body wheelset_body() {
@@ -136,7 +134,7 @@ TEST(WheelRail, SaturatingCreepLawIsBoundedByMuN) {
   ModelContact saturating = linear;
   ShenHedrickElkinsCreep<double> she;
   she.friction_coefficient = 0.3;
-  saturating.spec.creep_law = she;
+  saturating.creep_law = she;  // the model's parameter (spec keeps the scene's)
   const TrackFrameKinematics k = straight().frame_at(100.0, 20.0);
   for (double lateral_velocity : {2e-6, 1.0}) {
     Eigen::Matrix<double, 6, 1> q = Eigen::Matrix<double, 6, 1>::Zero(), qd = q;

@@ -57,13 +57,9 @@ std::complex<double> nearest(const Eigen::MatrixXd& A, std::complex<double> targ
   return best;
 }
 
-}  // namespace
-
-class ParameterDerivative : public ::testing::TestWithParam<const char*> {};
-
-TEST_P(ParameterDerivative, StateMatrixAndEigenvalueAgreeWithCentralDifferences) {
-  const SceneSpec scene = vehicle();
-  const std::string key = GetParam();
+// dA/dp and the hunting eigenvalue's d(lambda)/dp against central
+// differences of the whole pipeline.
+void check_against_central_differences(const SceneSpec& scene, const std::string& key) {
   const StateMatrixDerivative d = state_matrix_derivative(scene, kSpeed, key);
   const double p = d.parameter_value;
   ASSERT_GT(p, 0.0);
@@ -97,10 +93,58 @@ TEST_P(ParameterDerivative, StateMatrixAndEigenvalueAgreeWithCentralDifferences)
   EXPECT_LT(std::abs(dl - dl_fd), 2e-4 * std::abs(dl_fd)) << key;
 }
 
+}  // namespace
+
+class ParameterDerivative : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(ParameterDerivative, StateMatrixAndEigenvalueAgreeWithCentralDifferences) {
+  check_against_central_differences(vehicle(), GetParam());
+}
+
 INSTANTIATE_TEST_SUITE_P(ThesisVehicle, ParameterDerivative,
                          ::testing::Values("elements.secondary_bogie1.damping_N_s_per_m[1]",
                                            "elements.primary_ws1.stiffness_N_per_m[0]",
-                                           "bodies.carbody.mass_kg"));
+                                           "bodies.carbody.mass_kg",
+                                           // Contact parameters (model/model_contact.hpp):
+                                           "contacts.thesis_knife_edge.cone_angle_rad"));
+
+// The Kalker reduction factor (linear law), the friction coefficient and
+// Polach's reduction factors (saturating laws): the thesis vehicle with each law (its knife-edge
+// spin creepage, ~0.2 1/m at equilibrium, already loads the contact, so the
+// friction coefficient moves the hunting mode at 100 m/s).
+struct ContactLawCase {
+  const char* law;
+  const char* key;
+};
+class ContactParameterDerivative : public ::testing::TestWithParam<ContactLawCase> {};
+
+TEST_P(ContactParameterDerivative, StateMatrixAndEigenvalueAgreeWithCentralDifferences) {
+  SceneSpec scene = vehicle();
+  ASSERT_EQ(scene.contacts.size(), 1u);
+  const std::string law = GetParam().law;
+  if (law == "linear_kalker") {  // reduction 0.8: room for the +h step below 1
+    scene.contacts[0].creep_law = LinearKalkerCreep<double>{0.8};
+  } else if (law == "shen_hedrick_elkins") {
+    ShenHedrickElkinsCreep<double> she;
+    she.friction_coefficient = 0.3;
+    scene.contacts[0].creep_law = she;
+  } else {
+    PolachCreep<double> polach;
+    polach.friction_coefficient = 0.3;
+    scene.contacts[0].creep_law = polach;
+  }
+  const std::vector<std::string> keys = parameter_keys(scene);
+  ASSERT_NE(std::find(keys.begin(), keys.end(), GetParam().key), keys.end()) << GetParam().key;
+  check_against_central_differences(scene, GetParam().key);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    CreepLaws, ContactParameterDerivative,
+    ::testing::Values(
+        ContactLawCase{"linear_kalker", "contacts.thesis_knife_edge.kalker_reduction_factor"},
+        ContactLawCase{"shen_hedrick_elkins", "contacts.thesis_knife_edge.friction_coefficient"},
+        ContactLawCase{"polach", "contacts.thesis_knife_edge.friction_coefficient"},
+        ContactLawCase{"polach", "contacts.thesis_knife_edge.polach_slip_reduction_factor"}));
 
 TEST(ParameterDerivativeKeys, UnknownKeyIsNamedWithTheKeysThatExist) {
   const SceneSpec scene = vehicle();
@@ -117,4 +161,18 @@ TEST(ParameterDerivativeKeys, UnknownKeyIsNamedWithTheKeysThatExist) {
   const std::vector<std::string> keys = parameter_keys(scene);
   EXPECT_EQ(std::count(keys.begin(), keys.end(), "elements.secondary_bogie2.damping_N_s_per_m[1]"), 1);
   EXPECT_EQ(std::count(keys.begin(), keys.end(), "elements.secondary_bogie2_left.damping_N_s_per_m[1]"), 0);
+  // Contact keys by geometry and law: the knife-edge cone's angle, linear
+  // Kalker's reduction factor; no friction coefficient (linear creep has none).
+  EXPECT_EQ(std::count(keys.begin(), keys.end(), "contacts.thesis_knife_edge.cone_angle_rad"), 1);
+  EXPECT_EQ(std::count(keys.begin(), keys.end(), "contacts.thesis_knife_edge.kalker_reduction_factor"), 1);
+  EXPECT_EQ(std::count(keys.begin(), keys.end(), "contacts.thesis_knife_edge.conicity"), 0);
+  EXPECT_EQ(std::count(keys.begin(), keys.end(), "contacts.thesis_knife_edge.friction_coefficient"), 0);
+}
+
+// The linear conicity (textbook bogie: r = r0 +/- lambda y).
+TEST(ContactParameterDerivativeConicity, TextbookBogieAgreesWithCentralDifferences) {
+  const SceneSpec scene =
+      load_scene_file(std::string(RAILSTAB_CASES_DIR) + "/textbook_bogie.toml");
+  ASSERT_EQ(scene.contacts.size(), 1u);
+  check_against_central_differences(scene, "contacts." + scene.contacts[0].name + ".conicity");
 }

@@ -27,4 +27,8 @@ template CreepForces<AdScalar> LinearKalkerCreep<double>::forces(
 template CreepForces<AdScalar> LinearKalkerCreep<AdScalar>::forces(
     const CreepInput<AdScalar>&) const;
 
+// Parameters as AD variables (sensitivity): the model cast to ParamDual.
+template CreepForces<ParamDual> LinearKalkerCreep<ParamDual>::forces(const CreepInput<ParamDual>&) const;
+template CreepForces<ParamAdScalar> LinearKalkerCreep<ParamDual>::forces(const CreepInput<ParamAdScalar>&) const;
+
 }  // namespace railstab

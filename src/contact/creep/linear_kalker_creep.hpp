@@ -17,6 +17,11 @@ template <class S> struct LinearKalkerCreep {
 
   void validate() const;  // std::invalid_argument naming the field
   template <class T> CreepForces<T> forces(const CreepInput<T>& in) const;
+  // f(scene key, -1, value&) for each parameter (sensitivity keys
+  // contacts.<name>.<scene key>).
+  template <class F> void for_each_parameter(F&& f) {
+    f("kalker_reduction_factor", -1, kalker_reduction_factor);
+  }
   template <class S2> LinearKalkerCreep<S2> cast() const {
     return LinearKalkerCreep<S2>{cast_parameter<S2>(kalker_reduction_factor)};
   }

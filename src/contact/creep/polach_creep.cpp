@@ -93,4 +93,8 @@ template CreepForces<double> PolachCreep<double>::forces(const CreepInput<double
 template CreepForces<AdScalar> PolachCreep<double>::forces(const CreepInput<AdScalar>&) const;
 template CreepForces<AdScalar> PolachCreep<AdScalar>::forces(const CreepInput<AdScalar>&) const;
 
+// Parameters as AD variables (sensitivity): the model cast to ParamDual.
+template CreepForces<ParamDual> PolachCreep<ParamDual>::forces(const CreepInput<ParamDual>&) const;
+template CreepForces<ParamAdScalar> PolachCreep<ParamDual>::forces(const CreepInput<ParamAdScalar>&) const;
+
 }  // namespace railstab

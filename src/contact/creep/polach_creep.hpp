@@ -85,6 +85,16 @@ template <class S> struct PolachCreep {
   void validate() const;  // std::invalid_argument naming the field
   // Needs semi_axis_a_m, semi_axis_b_m > 0 when normal_force_N > 0.
   template <class T> CreepForces<T> forces(const CreepInput<T>& in) const;
+  // f(scene key, -1, value&) for each parameter (sensitivity keys
+  // contacts.<name>.<scene key>; the scene keys of io/scene_loader).
+  template <class F> void for_each_parameter(F&& f) {
+    f("friction_coefficient", -1, friction_coefficient);
+    f("kalker_reduction_factor", -1, kalker_reduction_factor);
+    f("polach_limit_friction_ratio", -1, limit_friction_ratio);
+    f("polach_friction_decrease_s_per_m", -1, friction_decrease_rate_s_per_m);
+    f("polach_adhesion_reduction_factor", -1, adhesion_reduction_factor);
+    f("polach_slip_reduction_factor", -1, slip_reduction_factor);
+  }
   template <class S2> PolachCreep<S2> cast() const {
     return PolachCreep<S2>{cast_parameter<S2>(friction_coefficient),
                            cast_parameter<S2>(limit_friction_ratio),

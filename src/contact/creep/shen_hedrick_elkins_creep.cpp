@@ -42,4 +42,8 @@ template CreepForces<AdScalar> ShenHedrickElkinsCreep<double>::forces(
 template CreepForces<AdScalar> ShenHedrickElkinsCreep<AdScalar>::forces(
     const CreepInput<AdScalar>&) const;
 
+// Parameters as AD variables (sensitivity): the model cast to ParamDual.
+template CreepForces<ParamDual> ShenHedrickElkinsCreep<ParamDual>::forces(const CreepInput<ParamDual>&) const;
+template CreepForces<ParamAdScalar> ShenHedrickElkinsCreep<ParamDual>::forces(const CreepInput<ParamAdScalar>&) const;
+
 }  // namespace railstab

@@ -46,6 +46,12 @@ template <class S> struct ShenHedrickElkinsCreep {
 
   void validate() const;  // std::invalid_argument naming the field
   template <class T> CreepForces<T> forces(const CreepInput<T>& in) const;
+  // f(scene key, -1, value&) for each parameter (sensitivity keys
+  // contacts.<name>.<scene key>).
+  template <class F> void for_each_parameter(F&& f) {
+    f("friction_coefficient", -1, friction_coefficient);
+    f("kalker_reduction_factor", -1, kalker_reduction_factor);
+  }
   template <class S2> ShenHedrickElkinsCreep<S2> cast() const {
     return ShenHedrickElkinsCreep<S2>{cast_parameter<S2>(friction_coefficient),
                                       cast_parameter<S2>(kalker_reduction_factor)};
