@@ -68,8 +68,9 @@ WheelContact<T> evaluate_wheel_contact(const ModelContactTpl<S>& contact, const 
 
   Vec3<T> nu_I;  // from the rail into the wheel
   if (spec.geometry == ContactGeometryKind::knife_edge_cone) {
-    const T g = lift<T>(contact.cone_angle_rad);
-    const T tg = tan(g), cg = cos(g), sg = sin(g);
+    // In the parameter scalar S, then lifted: no state derivatives to carry.
+    const S& g = contact.cone_angle_rad;
+    const T tg = lift<T>(S(tan(g))), cg = lift<T>(S(cos(g))), sg = lift<T>(S(sin(g)));
     // Wire point in the plane x_I = 0: x_I of (lambda, side e0, 0) - w vanishes.
     const T yaw = ws.q(5);
     const T lambda = w.x() - tan(yaw) * (sd * e0 - w.y());
