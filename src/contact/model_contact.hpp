@@ -56,6 +56,15 @@ template <class S> struct ModelContactTpl {
 
 using ModelContact = ModelContactTpl<double>;
 
+// The lateral shift of a wheelset beyond which the contact model no longer
+// holds: the flange clearance of the flangeless geometries (flange contact
+// is not modelled), the contact table's lateral half range for profiles
+// (beyond it the wheel has climbed off its rail).
+inline double lateral_validity_limit_m(const ContactSpec& spec) {
+  return spec.geometry == ContactGeometryKind::profiles ? spec.profile_source.table.lateral_half_range_m
+                                                        : spec.flange_clearance_m;
+}
+
 // The model's contact from the scene's description.
 inline ModelContact make_model_contact(const ContactSpec& spec) {
   ModelContact c;

@@ -38,6 +38,7 @@
 //
 // Outside the table range evaluate() throws std::domain_error (a wheel more
 // than the half range off its rail is derailed, not a contact state).
+#include "contact_geometry/contact_table_options.hpp"
 #include "contact_geometry/wheel_contact_points.hpp"
 #include "contact_geometry/wheelset_pose.hpp"
 
@@ -48,12 +49,6 @@
 
 namespace railstab {
 
-struct ContactTableOptions {
-  double lateral_half_range_m = 0.012;
-  double lateral_step_m = 1e-4;
-  double roll_half_range_rad = 0.02;
-  double roll_step_rad = 0.005;
-};
 
 // The tabulated quantities of one slot, in this order.
 enum class TableQuantity : int {
@@ -74,8 +69,23 @@ template <class T> struct TableContact {
   T normal_gap_m;       // vertical_gap cos(gamma); penetration = -normal_gap
   T wheel_u_m, rail_y_m, contact_angle_rad, rolling_radius_m, A_per_m, B_per_m;
   T wheel_slope_rad;    // gamma - theta: the contact normal's angle in the axle frame
-  double on_border;     // diagnostics (double: not differentiated)
+  // smoothstep(1 - on_border) in [0, 1]: the weight of the slot's contact in
+  // the force law (0 where its lowest point sits on its border: no contact
+  // of its own there). Differentiated, C1: it fades a contact in over a cell.
+  T interior_weight;
+  double on_border;     // diagnostics
 };
+
+namespace contact_table_detail {
+// Cubic Hermite basis on [0, 1] and its use with the cell widths.
+template <class T> struct Basis {
+  T h00, h10, h01, h11;
+};
+template <class T> Basis<T> hermite(const T& t) {
+  const T t2 = t * t, t3 = t2 * t;
+  return {2.0 * t3 - 3.0 * t2 + 1.0, t3 - 2.0 * t2 + t, -2.0 * t3 + 3.0 * t2, t3 - t2};
+}
+}  // namespace contact_table_detail
 
 class ContactTable {
  public:
@@ -91,6 +101,8 @@ class ContactTable {
   // Contact of `slot` for the wheel pose (wheelset_pose.hpp), any scalar T
   // (double or AdScalar): cell found from value_of(), Hermite basis in T.
   template <class T> TableContact<T> evaluate(int slot, const WheelPoseOf<T>& pose) const;
+  // The vertical gap alone (g0 + vertical), the cheap test for contact.
+  template <class T> T vertical_gap(int slot, const WheelPoseOf<T>& pose) const;
 
   // The raw node value (for tests and plots).
   double node(int slot, TableQuantity q, int i, int j) const {
@@ -104,6 +116,13 @@ class ContactTable {
   struct Node {
     double f, fq, ft, fqt;
   };
+  // The cell of a pose and the Hermite basis in it.
+  template <class T> struct Cell {
+    int i, j;
+    contact_table_detail::Basis<T> Ba, Bb;
+  };
+  template <class T> Cell<T> locate(int slot, const WheelPoseOf<T>& pose) const;
+  template <class T> T interpolate(int slot, TableQuantity which, const Cell<T>& c) const;
   ContactTableOptions options_;
   std::vector<double> borders_m_;  // decreasing
   double nominal_lateral_m_ = 0;
@@ -139,21 +158,11 @@ TableResolution measure_table_resolution(const ProfilePair& pair, const ContactT
 
 // ----- implementation of the template -----
 
-namespace contact_table_detail {
-// Cubic Hermite basis on [0, 1] and its use with the cell widths.
-template <class T> struct Basis {
-  T h00, h10, h01, h11;
-};
-template <class T> Basis<T> hermite(const T& t) {
-  const T t2 = t * t, t3 = t2 * t;
-  return {2.0 * t3 - 3.0 * t2 + 1.0, t3 - 2.0 * t2 + t, -2.0 * t3 + 3.0 * t2, t3 - t2};
-}
-}  // namespace contact_table_detail
+
 
 template <class T>
-TableContact<T> ContactTable::evaluate(int slot, const WheelPoseOf<T>& pose) const {
+ContactTable::Cell<T> ContactTable::locate(int slot, const WheelPoseOf<T>& pose) const {
   using contact_table_detail::hermite;
-  using std::cos;
   if (slot < 0 || slot >= slots())
     throw std::invalid_argument("ContactTable::evaluate: slot " + std::to_string(slot) +
                                 " out of range (table has " + std::to_string(slots()) + ")");
@@ -166,40 +175,65 @@ TableContact<T> ContactTable::evaluate(int slot, const WheelPoseOf<T>& pose) con
                             " m / roll " + std::to_string(tv) + " rad outside the table (" +
                             std::to_string(q0_) + " .. " + std::to_string(q_end) + " m, " +
                             std::to_string(t0_) + " .. " + std::to_string(t_end) + " rad)");
-  const int i = std::min(std::max(int((qv - q0_) / dq_), 0), nq_ - 2);
-  const int j = std::min(std::max(int((tv - t0_) / dt_), 0), nt_ - 2);
-  const T a = (q - (q0_ + i * dq_)) / dq_;
-  const T b = (th - (t0_ + j * dt_)) / dt_;
-  const auto Ba = hermite(a), Bb = hermite(b);
-  const auto& data = slot_data_[size_t(slot)];
-  auto interpolate = [&](TableQuantity which) -> T {
-    const std::vector<Node>& n = data[size_t(int(which))];
-    const Node& n00 = n[size_t(i * nt_ + j)];
-    const Node& n10 = n[size_t((i + 1) * nt_ + j)];
-    const Node& n01 = n[size_t(i * nt_ + j + 1)];
-    const Node& n11 = n[size_t((i + 1) * nt_ + j + 1)];
-    // Tensor Hermite: sum over corners of value, d/dq, d/dtheta, d2/dq dtheta.
-    auto along_q = [&](const Node& lo, const Node& hi, double Node::*f, double Node::*fq) -> T {
-      return Ba.h00 * (lo.*f) + Ba.h10 * (dq_ * (lo.*fq)) + Ba.h01 * (hi.*f) +
-             Ba.h11 * (dq_ * (hi.*fq));
-    };
-    const T v0 = along_q(n00, n10, &Node::f, &Node::fq);     // at theta_j
-    const T v1 = along_q(n01, n11, &Node::f, &Node::fq);     // at theta_j+1
-    const T s0 = along_q(n00, n10, &Node::ft, &Node::fqt);   // d/dtheta at theta_j
-    const T s1 = along_q(n01, n11, &Node::ft, &Node::fqt);
-    return Bb.h00 * v0 + Bb.h10 * (dt_ * s0) + Bb.h01 * v1 + Bb.h11 * (dt_ * s1);
+  Cell<T> c;
+  c.i = std::min(std::max(int((qv - q0_) / dq_), 0), nq_ - 2);
+  c.j = std::min(std::max(int((tv - t0_) / dt_), 0), nt_ - 2);
+  c.Ba = hermite(T((q - (q0_ + c.i * dq_)) / dq_));
+  c.Bb = hermite(T((th - (t0_ + c.j * dt_)) / dt_));
+  return c;
+}
+
+template <class T>
+T ContactTable::interpolate(int slot, TableQuantity which, const Cell<T>& c) const {
+  const std::vector<Node>& n = slot_data_[size_t(slot)][size_t(int(which))];
+  const int i = c.i, j = c.j;
+  const Node& n00 = n[size_t(i * nt_ + j)];
+  const Node& n10 = n[size_t((i + 1) * nt_ + j)];
+  const Node& n01 = n[size_t(i * nt_ + j + 1)];
+  const Node& n11 = n[size_t((i + 1) * nt_ + j + 1)];
+  // Tensor Hermite: sum over corners of value, d/dq, d/dtheta, d2/dq dtheta.
+  auto along_q = [&](const Node& lo, const Node& hi, double Node::*f, double Node::*fq) -> T {
+    return c.Ba.h00 * (lo.*f) + c.Ba.h10 * (dq_ * (lo.*fq)) + c.Ba.h01 * (hi.*f) +
+           c.Ba.h11 * (dq_ * (hi.*fq));
   };
+  const T v0 = along_q(n00, n10, &Node::f, &Node::fq);     // at theta_j
+  const T v1 = along_q(n01, n11, &Node::f, &Node::fq);     // at theta_j+1
+  const T s0 = along_q(n00, n10, &Node::ft, &Node::fqt);   // d/dtheta at theta_j
+  const T s1 = along_q(n01, n11, &Node::ft, &Node::fqt);
+  return c.Bb.h00 * v0 + c.Bb.h10 * (dt_ * s0) + c.Bb.h01 * v1 + c.Bb.h11 * (dt_ * s1);
+}
+
+template <class T> T ContactTable::vertical_gap(int slot, const WheelPoseOf<T>& pose) const {
+  return interpolate(slot, TableQuantity::gap0_m, locate(slot, pose)) + pose.vertical_m;
+}
+
+template <class T>
+TableContact<T> ContactTable::evaluate(int slot, const WheelPoseOf<T>& pose) const {
+  using std::cos;
+  const Cell<T> cell = locate(slot, pose);
   TableContact<T> c;
-  c.vertical_gap_m = interpolate(TableQuantity::gap0_m) + pose.vertical_m;
-  c.wheel_u_m = interpolate(TableQuantity::wheel_u_m);
-  c.rail_y_m = interpolate(TableQuantity::rail_y_m);
-  c.contact_angle_rad = interpolate(TableQuantity::contact_angle_rad);
-  c.rolling_radius_m = interpolate(TableQuantity::rolling_radius_m);
-  c.A_per_m = interpolate(TableQuantity::A_per_m);
-  c.B_per_m = interpolate(TableQuantity::B_per_m);
+  c.vertical_gap_m = interpolate(slot, TableQuantity::gap0_m, cell) + pose.vertical_m;
+  c.wheel_u_m = interpolate(slot, TableQuantity::wheel_u_m, cell);
+  c.rail_y_m = interpolate(slot, TableQuantity::rail_y_m, cell);
+  c.contact_angle_rad = interpolate(slot, TableQuantity::contact_angle_rad, cell);
+  c.rolling_radius_m = interpolate(slot, TableQuantity::rolling_radius_m, cell);
+  c.A_per_m = interpolate(slot, TableQuantity::A_per_m, cell);
+  c.B_per_m = interpolate(slot, TableQuantity::B_per_m, cell);
   c.normal_gap_m = c.vertical_gap_m * cos(c.contact_angle_rad);
-  c.wheel_slope_rad = c.contact_angle_rad - th;
-  c.on_border = value_of(interpolate(TableQuantity::on_border));
+  c.wheel_slope_rad = c.contact_angle_rad - pose.roll_rad;
+  const T border = interpolate(slot, TableQuantity::on_border, cell);
+  c.on_border = value_of(border);
+  // Smoothstep of 1 - on_border, u -> 3u^2 - 2u^3 on [0, 1], constant
+  // outside: C1 also where the interpolant leaves [0, 1] (a plain clamp
+  // would kink there).
+  if (c.on_border <= 0.0) {
+    c.interior_weight = T(1);
+  } else if (c.on_border >= 1.0) {
+    c.interior_weight = T(0);
+  } else {
+    const T u = 1.0 - border;
+    c.interior_weight = u * u * (3.0 - 2.0 * u);
+  }
   return c;
 }
 

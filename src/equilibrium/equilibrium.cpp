@@ -1,8 +1,10 @@
 #include "equilibrium/equilibrium.hpp"
 
+#include "contact/wheel_rail.hpp"
 #include "linear/jacobian.hpp"
 #include "model/equations_of_motion.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -64,8 +66,16 @@ Eigen::VectorXd initial_state(const Model& model, double speed_m_per_s) {
 
 Eigen::VectorXd lowered_nominal_state(const Model& model, double speed_m_per_s) {
   Eigen::VectorXd guess = nominal_state(model, speed_m_per_s);
+  // Every body lowered alike, so that each wheel overlaps its rail by about
+  // 0.1 mm: by 0.1 mm, plus the largest gap of a wheelset at its nominal
+  // height (profiles: the nominal centre height r0 need not touch exactly).
+  double lowering = 1e-4;
+  for (const Body& body : model.bodies)
+    if (const WheelsetKind* w = body.wheelset())
+      lowering = std::max(lowering, 1e-4 + centred_wheel_gap_m(model.contacts[size_t(w->contact)],
+                                                               body.nominal_q(int(CoordinateIndex::z))));
   for (int k = 0; k < model.n_coordinates; ++k)
-    if (model.coordinate_of_state[k].second == int(CoordinateIndex::z)) guess(k) -= 1e-4;
+    if (model.coordinate_of_state[k].second == int(CoordinateIndex::z)) guess(k) -= lowering;
   return guess;
 }
 
@@ -158,6 +168,30 @@ EquilibriumResult solve_equilibrium(const Model& model, double speed_m_per_s,
         // whose contact is undefined there): shorten the step.
       }
       alpha *= 0.5;
+    }
+    // Where the Newton direction does not decrease the residual (the model
+    // is only C1, or strongly non-linear, along it: a wheel's contact jumping
+    // between tread points, a curve entered from the centred position),
+    // Levenberg-Marquardt steps (J^T J + mu I) s = -J^T r, from a short one
+    // along the gradient towards the Newton step as mu decreases.
+    if (!accepted && step.allFinite()) {
+      const Eigen::MatrixXd JtJ = J.transpose() * J;
+      const Eigen::VectorXd g = J.transpose() * r;
+      const double scale = std::max(JtJ.diagonal().maxCoeff(), 1e-300);
+      for (double mu = 1.0; mu >= 1e-8 && !accepted; mu *= 0.1) {
+        const Eigen::VectorXd lm =
+            (JtJ + mu * scale * Eigen::MatrixXd::Identity(m, m)).ldlt().solve(-g);
+        if (!lm.allFinite()) continue;
+        x_try = x;
+        for (int j = 0; j < m; ++j) x_try(unknowns[j]) += lm(j);
+        try {
+          r_try = residual(model, V, t, x_try);
+          accepted = r_try.norm() < (1.0 - 1e-6) * r0;
+        } catch (const std::bad_alloc&) {
+          throw;
+        } catch (const std::exception&) {
+        }
+      }
     }
     if (!accepted) break;
     x = x_try;

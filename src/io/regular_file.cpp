@@ -1,5 +1,7 @@
 #include "io/regular_file.hpp"
 
+#include <filesystem>
+
 #include <cerrno>
 #include <cstring>
 #include <fcntl.h>
@@ -63,6 +65,12 @@ std::string read_regular_file(const std::string& path, std::size_t max_bytes) {
                                " bytes, got more");
   }
   return text;
+}
+
+std::string path_relative_to_file(const std::string& file_path, const std::string& path) {
+  const std::filesystem::path p(path);
+  if (p.is_absolute()) return p.lexically_normal().string();
+  return (std::filesystem::path(file_path).parent_path() / p).lexically_normal().string();
 }
 
 }  // namespace railstab

@@ -18,4 +18,8 @@ inline constexpr std::size_t kMaxInputFileBytes = std::size_t(16) << 20;
 // pipe (not a regular file)".
 std::string read_regular_file(const std::string& path, std::size_t max_bytes = kMaxInputFileBytes);
 
+// `path` as named inside the file `file_path` (e.g. a profile in a scene):
+// relative paths are taken from the file's folder; absolute ones are kept.
+std::string path_relative_to_file(const std::string& file_path, const std::string& path);
+
 }  // namespace railstab

@@ -22,6 +22,7 @@
 //   6. public API
 #include "io/scene_loader.hpp"
 
+#include "contact_geometry/profile_contact_geometry.hpp"
 #include "io/regular_file.hpp"
 #include "scene/physical_ranges.hpp"
 
@@ -450,7 +451,8 @@ const Choices<TrackSegmentKind> kSegmentKinds = {{"tangent", TrackSegmentKind::t
 const Choices<double> kTurnSigns = {{"left", +1.0}, {"right", -1.0}};
 const Choices<ContactGeometryKind> kContactGeometries = {
     {"knife_edge_cone", ContactGeometryKind::knife_edge_cone},
-    {"linear_conicity", ContactGeometryKind::linear_conicity}};
+    {"linear_conicity", ContactGeometryKind::linear_conicity},
+    {"profiles", ContactGeometryKind::profiles}};
 const Choices<NormalForceKind> kNormalForces = {{"hertz", NormalForceKind::hertz},
                                                 {"prescribed", NormalForceKind::prescribed}};
 const Choices<TangentialForceKind> kTangentialForces = {
@@ -626,6 +628,95 @@ CreepLawSpec read_creep_law(const TableReader& contact, const ContactSpec& spec)
   return law;
 }
 
+// geometry = "profiles": the keys of the profile files, their placement and
+// the contact table's grid (contact_geometry/profile_contact_geometry.hpp).
+const std::vector<std::string_view> kProfileKeys = {
+    "wheel_profile", "wheel_profile_mm", "wheel_profile_m", "rail_profile", "rail_profile_mm",
+    "rail_profile_m", "track_gauge_m", "gauge_measuring_height_m", "flange_back_distance_m",
+    "rail_inclination_rad", "tape_circle_from_flange_back_m", "table_lateral_half_range_m",
+    "table_lateral_step_m", "table_roll_half_range_rad", "table_roll_step_rad"};
+// Keys of the flangeless models that the profiles replace.
+const std::vector<std::string_view> kFlangelessKeys = {
+    "cone_angle_rad", "conicity", "half_contact_distance_m", "rail_head_transverse_radius_m",
+    "flange_clearance_m"};
+
+// One of KEY (a SIMPACK .prw/.prr file, unit from its header), KEY_mm or
+// KEY_m (plain two-column text in that unit); the path relative to the scene.
+void read_profile_file_key(const TableReader& contact, const std::string& key, std::string& path,
+                           LengthUnit& unit) {
+  int found = 0;
+  for (const auto& [suffix, u] : {std::pair<std::string, LengthUnit>{"", LengthUnit::millimetre},
+                                  {"_mm", LengthUnit::millimetre},
+                                  {"_m", LengthUnit::metre}}) {
+    const std::string k = key + suffix;
+    if (!contact.has(k)) continue;
+    ++found;
+    path = contact.text(k);
+    unit = u;
+    const auto ends_with = [&](const char* ext) {
+      return path.size() >= 4 && path.compare(path.size() - 4, 4, ext) == 0;
+    };
+    if (suffix.empty() && !ends_with(".prw") && !ends_with(".prr"))
+      contact.fail(k, "a SIMPACK .prw/.prr file (a plain-text profile names its unit: " + key +
+                          "_mm or " + key + "_m)",
+                   quoted(path));
+  }
+  if (found != 1)
+    contact.fail(key, "exactly one of " + key + " (SIMPACK), " + key + "_mm or " + key +
+                          "_m (plain text)",
+                 found == 0 ? std::string(kMissingKey) : std::to_string(found) + " of them");
+  path = path_relative_to_file(contact.source(), path);
+}
+
+ProfileSourceSpec read_profile_source(const TableReader& contact) {
+  ProfileSourceSpec s;
+  read_profile_file_key(contact, "wheel_profile", s.wheel_profile_path, s.wheel_unit);
+  read_profile_file_key(contact, "rail_profile", s.rail_profile_path, s.rail_unit);
+  ProfilePairParameters& p = s.placement;
+  p.track_gauge_m = contact.number_or("track_gauge_m", "m", p.track_gauge_m);
+  p.gauge_measuring_height_m =
+      contact.number_or("gauge_measuring_height_m", "m", p.gauge_measuring_height_m);
+  p.flange_back_distance_m =
+      contact.number_or("flange_back_distance_m", "m", p.flange_back_distance_m);
+  p.rail_inclination_rad = contact.number_or("rail_inclination_rad", "rad", p.rail_inclination_rad);
+  p.tape_circle_from_flange_back_m =
+      contact.number_or("tape_circle_from_flange_back_m", "m", p.tape_circle_from_flange_back_m);
+  ContactTableOptions& t = s.table;
+  auto positive = [&](std::string_view key, std::string_view unit, double fallback, double lo,
+                      double hi) {
+    const double v = contact.number_or(key, unit, fallback);
+    if (!(v >= lo && v <= hi))
+      contact.fail(key, "a number in [" + format_number(lo) + ", " + format_number(hi) + "] " +
+                            std::string(unit),
+                   format_number(v));
+    return v;
+  };
+  t.lateral_half_range_m = positive("table_lateral_half_range_m", "m", t.lateral_half_range_m, 0.002, 0.03);
+  t.lateral_step_m = positive("table_lateral_step_m", "m", t.lateral_step_m, 2e-5, 1e-3);
+  t.roll_half_range_rad = positive("table_roll_half_range_rad", "rad", t.roll_half_range_rad, 0.002, 0.1);
+  t.roll_step_rad = positive("table_roll_step_rad", "rad", t.roll_step_rad, 1e-4, 0.02);
+  return s;
+}
+
+// Reads the profiles and builds the contact table once, for every model of
+// the scene; a profile error is reported under the contact's key.
+void load_profile_geometry(const TableReader& contact, ContactSpec& spec) {
+  for (std::string_view key : kFlangelessKeys)
+    contact.reject_if_present(key, "no " + std::string(key) +
+                                       " with geometry = \"profiles\" (the profiles define it)");
+  if (spec.normal != NormalForceKind::hertz)
+    contact.fail("normal", "\"hertz\" with geometry = \"profiles\" (the normal force follows "
+                           "from the penetration at each contact point)",
+                 "another normal force model");
+  spec.profile_source = read_profile_source(contact);
+  try {
+    spec.profile_geometry =
+        build_profile_contact_geometry(spec.profile_source, spec.nominal_rolling_radius_m);
+  } catch (const ProfileError& e) {
+    throw scene_error(contact.source(), contact.key_path(), e.what());
+  }
+}
+
 ContactSpec read_contact(const TableReader& contact, std::string name) {
   ContactSpec spec;
   spec.name = std::move(name);
@@ -667,6 +758,13 @@ ContactSpec read_contact(const TableReader& contact, std::string name) {
   spec.normal_damping_N_s_per_m =
       contact.number_or("normal_damping_N_s_per_m", "N s/m", spec.normal_damping_N_s_per_m);
   spec.creep_law = read_creep_law(contact, spec);
+  if (spec.geometry == ContactGeometryKind::profiles) {
+    load_profile_geometry(contact, spec);
+  } else {
+    for (std::string_view key : kProfileKeys)
+      contact.reject_if_present(key, "no " + std::string(key) +
+                                         " unless geometry = \"profiles\"");
+  }
   return spec;
 }
 
@@ -689,7 +787,11 @@ std::vector<ContactSpec> read_contacts(const TableReader& top) {
          "normal_damping_N_s_per_m", "creep_law", "friction_coefficient",
          "kalker_reduction_factor", "polach_limit_friction_ratio",
          "polach_friction_decrease_s_per_m", "polach_adhesion_reduction_factor",
-         "polach_slip_reduction_factor"});
+         "polach_slip_reduction_factor", "wheel_profile", "wheel_profile_mm", "wheel_profile_m",
+         "rail_profile", "rail_profile_mm", "rail_profile_m", "track_gauge_m",
+         "gauge_measuring_height_m", "flange_back_distance_m", "rail_inclination_rad",
+         "tape_circle_from_flange_back_m", "table_lateral_half_range_m", "table_lateral_step_m",
+         "table_roll_half_range_rad", "table_roll_step_rad"});
     contacts.push_back(read_contact(contact, std::string(name.str())));
   }
   return contacts;
@@ -1211,9 +1313,11 @@ class SceneChecker {
     namespace r = physical_ranges;
     if (contact.geometry == ContactGeometryKind::linear_conicity)
       require_in(at("conicity"), contact.conicity, r::conicity);
-    require_in(at("half_contact_distance_m"), contact.half_contact_distance_m,
-               r::half_contact_distance_m);
-    check_contact_distances(at("half_contact_distance_m"), contact.half_contact_distance_m);
+    if (contact.geometry != ContactGeometryKind::profiles) {
+      require_in(at("half_contact_distance_m"), contact.half_contact_distance_m,
+                 r::half_contact_distance_m);
+      check_contact_distances(at("half_contact_distance_m"), contact.half_contact_distance_m);
+    }
     require_in(at("nominal_rolling_radius_m"), contact.nominal_rolling_radius_m,
                r::rolling_radius_m);
     require_in(at("flange_clearance_m"), contact.flange_clearance_m, r::flange_clearance_m);

@@ -35,11 +35,12 @@ EnergyParts mechanical_energy(const Model& model, double speed_m_per_s, double t
     if (!wheelset) continue;
     const ModelContact& c = model.contacts[wheelset->contact];
     if (c.spec.normal != NormalForceKind::hertz) continue;
-    for (int side : {1, -1}) {
-      const WheelContact<double> w =
-          evaluate_wheel_contact(c, ws.motions[b], side, speed_m_per_s);
-      if (w.penetration_m > 0.0) e.contact_J += 0.4 * w.elastic_normal_force_N * w.penetration_m;
-    }
+    for (int side : {1, -1})
+      for (int slot = 0; slot < contact_points_per_wheel(c); ++slot) {
+        const WheelContact<double> w =
+            evaluate_wheel_contact(c, ws.motions[b], side, speed_m_per_s, slot);
+        if (w.penetration_m > 0.0) e.contact_J += 0.4 * w.elastic_normal_force_N * w.penetration_m;
+      }
   }
   return e;
 }

@@ -64,15 +64,20 @@ void evaluate_rhs(const ModelTpl<ParameterScalar<T>>& model, Workspace<T>& ws, d
     const WheelsetKind* wheelset = model.bodies[b].wheelset();
     if (!wheelset) continue;
     BodyMotion<T>& m = ws.motions[b];
-    for (int side : {1, -1}) {
-      const WheelContact<T> wc =
-          evaluate_wheel_contact(model.contacts[wheelset->contact], m, side, speed_m_per_s);
-      m.force_W += m.R_WI * wc.force_I;
-      m.spinning_moment_W += m.R_WI * wc.moment_I;
-      if constexpr (std::is_same_v<T, double>) {
-        if (details) details->contacts.push_back({int(b), wc});
+    const auto& contact = model.contacts[wheelset->contact];
+    const int points = contact_points_per_wheel(contact);
+    for (int side : {1, -1})
+      for (int slot = 0; slot < points; ++slot) {
+        const WheelContact<T> wc = evaluate_wheel_contact(contact, m, side, speed_m_per_s, slot);
+        // Profiles: a slot out of contact has no force (Hertz only) and is
+        // left out of the reports.
+        if (points > 1 && value_of(wc.normal_force_N) <= 0.0) continue;
+        m.force_W += m.R_WI * wc.force_I;
+        m.spinning_moment_W += m.R_WI * wc.moment_I;
+        if constexpr (std::is_same_v<T, double>) {
+          if (details) details->contacts.push_back({int(b), wc});
+        }
       }
-    }
   }
 
   for (size_t b = 0; b < model.bodies.size(); ++b) {

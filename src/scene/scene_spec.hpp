@@ -18,13 +18,16 @@
 #include "contact/creep/polach_creep.hpp"
 #include "contact/creep/shen_hedrick_elkins_creep.hpp"
 #include "core/coordinates.hpp"
+#include "contact_geometry/contact_table_options.hpp"
 #include "elements/element.hpp"
+#include "profiles/profile_pair.hpp"
 #include "scene/track_spec.hpp"
 #include "scene/integrator_kind.hpp"
 
 #include <Eigen/Dense>
 
 #include <array>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -33,8 +36,24 @@ namespace railstab {
 // --- Wheel-rail contact ---------------------------------------------------------
 enum class ContactGeometryKind {
   knife_edge_cone,  // thesis 5.2-5.7: conical wheel on a wire rail
-  linear_conicity   // textbook: r = r0 +/- lambda y, normal along the track normal
+  linear_conicity,  // textbook: r = r0 +/- lambda y, normal along the track normal
+  profiles          // measured or design wheel and rail profiles (contact tables)
 };
+
+// geometry = "profiles": where the profiles come from and how they are
+// placed (profiles/profile_pair.hpp; the pair's nominal rolling radius is the
+// contact's nominal_rolling_radius_m), and the grid of the contact table
+// (contact_geometry/contact_tables.hpp).
+struct ProfileSourceSpec {
+  std::string wheel_profile_path, rail_profile_path;  // resolved against the scene's folder
+  LengthUnit wheel_unit = LengthUnit::millimetre, rail_unit = LengthUnit::millimetre;
+  ProfilePairParameters placement;
+  ContactTableOptions table;
+};
+// The placed pair and its contact table, built once when the scene is read
+// (contact_geometry/profile_contact_geometry.hpp) and shared, immutable, by
+// every model built from the scene.
+struct ProfileContactGeometry;
 enum class NormalForceKind { hertz, prescribed };
 enum class TangentialForceKind {
   kalker_hertz,  // Kalker linear, coefficients from the Hertz ellipse and table B.1
@@ -84,6 +103,9 @@ struct ContactSpec {
   // `creep_law`: linear_kalker (default, the thesis: no saturation),
   // shen_hedrick_elkins or polach (saturate at mu N; keys in io/scene_loader).
   CreepLawSpec creep_law = LinearKalkerCreep<double>{};
+  // geometry = profiles (null otherwise).
+  ProfileSourceSpec profile_source;
+  std::shared_ptr<const ProfileContactGeometry> profile_geometry;
 };
 
 // --- Bodies ------------------------------------------------------------------------

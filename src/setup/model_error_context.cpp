@@ -85,7 +85,8 @@ StateDiagnosis diagnose(const Model& model, double V, double t, const Eigen::Vec
       }
     const Body& body = model.bodies[size_t(b)];
     if (!body.wheelset()) continue;
-    const double clearance = model.contacts[size_t(body.wheelset()->contact)].spec.flange_clearance_m;
+    const double clearance =
+        lateral_validity_limit_m(model.contacts[size_t(body.wheelset()->contact)].spec);
     const double shift = q6(1, b) - body.nominal_q(1);
     const double ratio = std::abs(shift) / clearance;
     if (std::isfinite(ratio) && ratio > worst_ratio) {

@@ -81,7 +81,9 @@ StabilityPoint SpeedStability::at(double speed_m_per_s) {
   for (const Body& b : model.bodies) {
     const int k = b.state_index[int(CoordinateIndex::y)];
     if (!b.wheelset() || k < 0) continue;
-    const double clearance = model.contacts[b.wheelset()->contact].spec.flange_clearance_m;
+    const ContactSpec& contact = model.contacts[b.wheelset()->contact].spec;
+    if (contact.geometry == ContactGeometryKind::profiles) continue;  // has its flange
+    const double clearance = contact.flange_clearance_m;
     if (std::abs(p.equilibrium.state(k)) > clearance && p.validity_warning.empty()) {
       std::ostringstream w;
       w << b.name << " steady lateral shift " << p.equilibrium.state(k) * 1e3

@@ -488,12 +488,12 @@ TEST(SceneLoader, EveryCaseFileLoadsWithTheExpectedBodyCount) {
       {"extreme_cant_deficiency.toml", 3}, {"extreme_cant_excess.toml", 3},
       {"extreme_zero_damping.toml", 3},   {"extreme_lift_off.toml", 3},
       {"extreme_near_critical.toml", 3},  {"extreme_conservative.toml", 3},
-      {"coach_tangent.toml", 7},          {"coach_curve.toml", 7}};
+      {"coach_tangent.toml", 7},          {"coach_curve.toml", 7},
+      {"thesis_vehicle_s1002_tangent.toml", 7}, {"thesis_bogie_s1002_tangent.toml", 3}};
   size_t files_seen = 0;
   for (const auto& entry : std::filesystem::directory_iterator(RAILSTAB_CASES_DIR)) {
     if (entry.path().extension() != ".toml") continue;
-    // A contact-geometry-only file, read by `railstab contact-geometry` until the scene
-    // loader knows geometry = "profiles" (src/profiles/profile_contact_scene.hpp).
+    // A contact-only file (no bodies), read by `railstab contact-geometry`.
     if (entry.path().filename() == "s1002_uic60_contact.toml") continue;
     ++files_seen;
     const std::string file = entry.path().filename().string();
