@@ -137,8 +137,8 @@ std::vector<std::string> write_mode_plots(const Model& model, const StabilityPoi
     std::ostringstream title;
     title << model.name << ": " << m.name << ", " << std::setprecision(4) << m.frequency_hz
           << " Hz, damping ratio " << m.damping_ratio << ", at " << p.speed_m_per_s
-          << " m/s (plan view, lateral and yaw exaggerated x" << std::setprecision(3) << a
-          << "; grey: rest)";
+          << " m/s (plan view from above; lateral and yaw scaled so the largest corner moves "
+          << kDrawnAmplitude_m << " m; grey: rest)";
     for (const char* ext : {".png", ".svg"}) {
       const std::string file = base + ext;
       gp << (ext == std::string(".png")

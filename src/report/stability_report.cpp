@@ -278,7 +278,7 @@ void write_mode_json(JsonWriter& j, const ModeReport& m) {
 }
 
 void write_json(std::ostream& out, const Model& model, const CriticalSpeedResult& r,
-                const std::string& solver) {
+                const std::string& solver, double max_hz) {
   {
     JsonWriter j(out);
     j.begin_object().field("scene", model.name).field("source", model.source_path);
@@ -300,12 +300,27 @@ void write_json(std::ostream& out, const Model& model, const CriticalSpeedResult
           .field("frequency_hz", m.frequency_hz)
           .field("damping_ratio", m.damping_ratio)
           .field("mode", m.name);
+      const std::vector<ModeShape> shapes = full_mode_shapes(model, r.at_critical);
       j.key("mode_shape").begin_object();
       write_mode_json(j, m);
       j.key("shape");
-      write_mode_shape_json(
-          j, model, full_mode_shapes(model, r.at_critical)[size_t(r.at_critical.least_stable)]);
+      write_mode_shape_json(j, model, shapes[size_t(r.at_critical.least_stable)]);
       j.end_object();
+      // Every oscillatory mode up to the plotted band at the stable side of
+      // the final bracket, with its shape: what a client compares the
+      // hunting mode with.
+      j.field("modes_at_critical_speed_m_s", r.at_critical.speed_m_per_s);
+      j.key("modes_at_critical_speed").begin_array();
+      for (size_t i = 0; i < r.at_critical.modes.size(); ++i) {
+        const ModeReport& mi = r.at_critical.modes[i];
+        if (mi.neutral || mi.eigenvalue.imag() <= 0.0 || mi.frequency_hz > max_hz) continue;
+        j.begin_object();
+        write_mode_json(j, mi);
+        j.key("shape");
+        write_mode_shape_json(j, model, shapes[i]);
+        j.end_object();
+      }
+      j.end_array();
     } else {
       j.key("critical_speed_m_s").null().key("frequency_hz").null().key("mode").null();
     }
@@ -470,7 +485,9 @@ StabilityFiles write_stability_results(const Model& model, const CriticalSpeedRe
   outputs.write(files.csv, [&](std::ostream& out) { write_eigenvalue_csv(out, result, ids); });
   files.json = stem + "_critical_speed.json";
   outputs.write(files.json,
-                [&](std::ostream& out) { write_json(out, model, result, eigen_solver_name); });
+                [&](std::ostream& out) {
+                  write_json(out, model, result, eigen_solver_name, max_plot_frequency_hz);
+                });
   if (plots)
     files.plots = {stem + "_root_locus.png", stem + "_damping_vs_speed.png",
                    stem + "_frequency_vs_speed.png"};
@@ -502,11 +519,14 @@ void print_critical_speed_summary(std::ostream& out, const Model& model,
         << std::defaultfloat << std::setprecision(5) << ", frequency " << m.frequency_hz
         << " Hz, mode " << m.name << "\n";
   }
-  if (r.damping_limit_found)
+  if (r.damping_limit_found) {
     out << "damping ratio below " << r.min_damping_ratio << " from " << std::fixed
         << std::setprecision(2) << r.damping_limit_speed_m_per_s << " m/s" << std::defaultfloat
-        << std::setprecision(6) << " ("
-        << r.at_damping_limit.modes[size_t(r.at_damping_limit.least_damped)].name << ")\n";
+        << std::setprecision(6);
+    const StabilityPoint& p = r.at_damping_limit;
+    if (p.least_damped >= 0) out << " (" << p.modes[size_t(p.least_damped)].name << ")";
+    out << "\n";
+  }
   else if (r.damping_below_at_start)
     out << "damping ratio already below " << r.min_damping_ratio << " at " << r.from_m_per_s
         << " m/s\n";

@@ -20,8 +20,9 @@ struct StabilityFiles {
 
 // Adds every file, named <stem>_..., to `outputs` (staged; the caller
 // commits): eigenvalue CSV, JSON, Markdown and, with `plots`, the gnuplot
-// data, script and PNGs (gnuplot run and checked; throws GnuplotError).
-// `max_plot_frequency_hz` keeps the stiff contact modes off the plots.
+// data, script, PNGs and SVGs (gnuplot run and checked; throws GnuplotError).
+// `max_plot_frequency_hz` keeps the stiff contact modes off the plots and
+// bounds the JSON's modes_at_critical_speed (each with its shape).
 StabilityFiles write_stability_results(const Model& model, const CriticalSpeedResult& result,
                                        OutputSet& outputs, const std::string& stem,
                                        const std::string& eigen_solver_name, bool plots = true,

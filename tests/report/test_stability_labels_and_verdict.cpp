@@ -112,6 +112,7 @@ TEST(StabilityVerdict, JsonAndMarkdownAgreeInEveryOutcome) {
   // The critical mode's shape with both energy shares in the JSON and the Markdown.
   EXPECT_TRUE(json_has(w.json, "normalised_to", "\"wheelset[^\"]* lateral\""));
   EXPECT_TRUE(json_has(w.json, "potential_energy_share", "[-0-9]"));
+  EXPECT_TRUE(json_has(w.json, "modes_at_critical_speed", "\\[\\s*\\{"));
   EXPECT_NE(w.markdown.find("| body | coordinate | amplitude | phase [deg] | kinetic share | "
                             "potential share |"),
             std::string::npos);
