@@ -85,7 +85,14 @@ void write_mode_shape_markdown(std::ostream& md, const Model& model, const ModeS
       md << "-";
     md << " |\n";
   }
-  md << "\n";
+  md << "\nKinetic share: m_i |u_i|^2 over the sum (u the rates). Potential share: the "
+        "coordinate's part Re(conj(q_i) (K q)_i) of q^H K q, K the stiffness of the suspension "
+        "and gravity without the wheel-rail contact (creep forces have no potential); it is "
+        "negative where a spring's other end moves further the same way than the coordinate. "
+        "Both sum to 1.";
+  if (!shape.potential_defined)
+    md << " Here no suspension is deflected by the mode: potential shares undefined (-).";
+  md << "\n\n";
 }
 
 }  // namespace railstab

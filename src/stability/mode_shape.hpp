@@ -30,11 +30,14 @@
 //             gravitational stiffness that reaches the wheelsets through the
 //             contact. Element internal states (the damper node of a
 //             series spring-damper) are held fixed: its spring acts as a
-//             spring to that node. V_i is coordinate i's part of the quadratic form
-//             q^H K_s q: the V_i sum to 1 exactly; a V_i is negative where a
-//             coordinate moves with a spring's other end and by less (its
-//             displacement lowers that spring's stretch). For an undamped
-//             normal mode K q = omega^2 M q, so V_i = T_i (a test oracle).
+//             spring to that node. V_i is coordinate i's part of the
+//             quadratic form q^H K_s q: the V_i sum to 1 exactly; a V_i is
+//             negative where a spring's other end moves further the same way
+//             than coordinate i (k (|q_i|^2 - Re(conj(q_i) q_j)) < 0 for a
+//             spring k between i and j). In a kinematic (hunting) mode the
+//             suspension is barely deflected, so the shares are differences of
+//             large terms and several are negative. For an undamped normal
+//             mode K q = omega^2 M q, so V_i = T_i (a test oracle).
 //             When the quadratic form vanishes (no suspension moves: a lone
 //             wheelset on its contact), the potential shares are undefined.
 #include "linear/linearization.hpp"
@@ -43,7 +46,6 @@
 #include <Eigen/Dense>
 
 #include <complex>
-#include <optional>
 #include <string>
 #include <vector>
 
