@@ -40,7 +40,9 @@ void run_modes(const ModesArgs& a) {
   for (int i = 0; i < int(p.modes.size()); ++i) {
     const ModeReport& m = p.modes[size_t(i)];
     if (m.neutral || m.eigenvalue.imag() <= 0.0 || m.frequency_hz > a.max_frequency_hz) continue;
-    bool wanted = a.names.empty();
+    // Default: the lateral-plane modes (what a plan view shows); --mode
+    // picks any mode by name.
+    bool wanted = a.names.empty() && m.lateral_share >= 0.5;
     for (const std::string& n : a.names) wanted = wanted || m.name.find(n) != std::string::npos;
     if (wanted) chosen.push_back(i);
   }
@@ -50,7 +52,8 @@ void run_modes(const ModesArgs& a) {
   if (chosen.empty())
     throw std::invalid_argument(
         "modes: no oscillatory mode up to --max-frequency " + std::to_string(a.max_frequency_hz) +
-        " Hz" + (a.names.empty() ? std::string() : " whose name contains a --mode text"));
+        " Hz" + (a.names.empty() ? std::string(" in the lateral plane")
+                                 : std::string(" whose name contains a --mode text")));
   if (int(chosen.size()) > a.count) chosen.resize(size_t(a.count));
   OutputSet outputs(a.out_dir);
   write_mode_plots(s.model, p, chosen, outputs, file_stem(s.model.name));
@@ -68,8 +71,9 @@ void run_modes(const ModesArgs& a) {
 void register_modes_command(CLI::App& app) {
   auto a = std::make_shared<ModesArgs>();
   CLI::App* cmd = app.add_subcommand(
-      "modes", "plan-view plots (PNG and SVG) of the mode shapes at one speed: lateral and yaw "
-               "of every body at four phases");
+      "modes", "plan-view plots (PNG, SVG, animated GIF) of the mode shapes at one speed: "
+               "lateral and yaw of every body at four phases; by default the lateral-plane modes, "
+               "least damped first");
   cmd->add_option("scene", a->scene, "scene file (TOML)")->required()->check(CLI::ExistingFile);
   cmd->add_option("--speed", a->overrides.speed_m_per_s, "speed V in m/s")
       ->check(finite_in(flag_ranges::speed_m_per_s));

@@ -14,6 +14,7 @@ namespace railstab {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+constexpr int kAnimationFrames = 16;
 
 double body_x(const Body& b) { return b.track_offset_m + b.nominal_q(0); }
 
@@ -117,16 +118,21 @@ std::vector<std::string> write_mode_plots(const Model& model, const StabilityPoi
     const std::string base = stem + "_mode" + std::to_string(k) + "_" + file_stem(m.name) + "_" +
                              speed_file_tag(p.speed_m_per_s);
     const std::string data = base + ".dat";
-    const double a = plan_view_exaggeration(outlines, shape);
+    // A mode without lateral-plane motion (bounce, pitch) is drawn at rest:
+    // its round-off lateral motion must not be blown up to full size.
+    const bool lateral = m.lateral_share >= kMinDrawnLateralShare;
+    const double a = lateral ? plan_view_exaggeration(outlines, shape) : 0.0;
     outputs.write(data, [&](std::ostream& out) {
       out << std::setprecision(10)
           << "# x_m y_m role(0 wheelset, 1 bogie frame, 2 car body); one index per phase, "
              "first the rest position\n";
-      for (int ph = -1; ph < phases; ++ph) {
+      // Index 0: rest; 1..phases: the panels; then the animation frames.
+      for (int ph = -1; ph < phases + kAnimationFrames; ++ph) {
+        const double phase = ph < phases ? 2.0 * kPi * ph / phases
+                                         : 2.0 * kPi * (ph - phases) / kAnimationFrames;
         for (const BodyOutline& o : outlines) {
-          const auto corners =
-              ph < 0 ? displaced_outline(o, shape, 0.0, 0.0)
-                     : displaced_outline(o, shape, a, 2.0 * kPi * ph / phases);
+          const auto corners = ph < 0 ? displaced_outline(o, shape, 0.0, 0.0)
+                                      : displaced_outline(o, shape, a, phase);
           for (const auto& c : corners)
             out << c[0] << ' ' << c[1] << ' ' << int(o.role) << '\n';
           out << '\n';
@@ -134,11 +140,15 @@ std::vector<std::string> write_mode_plots(const Model& model, const StabilityPoi
         out << '\n';
       }
     });
-    std::ostringstream title;
+    std::ostringstream title, note;
     title << model.name << ": " << m.name << ", " << std::setprecision(4) << m.frequency_hz
-          << " Hz, damping ratio " << m.damping_ratio << ", at " << p.speed_m_per_s
-          << " m/s (plan view from above; lateral and yaw scaled so the largest corner moves "
-          << kDrawnAmplitude_m << " m; grey: rest)";
+          << " Hz, damping ratio " << m.damping_ratio << ", at " << p.speed_m_per_s << " m/s";
+    note << "x, forward <- [m]   (plan view from above; ";
+    if (lateral)
+      note << "lateral and yaw scaled so the largest corner moves " << kDrawnAmplitude_m
+           << " m; grey dashed: rest)";
+    else
+      note << "no lateral or yaw motion: the mode moves out of this plane)";
     for (const char* ext : {".png", ".svg"}) {
       const std::string file = base + ext;
       gp << (ext == std::string(".png")
@@ -149,7 +159,7 @@ std::vector<std::string> write_mode_plots(const Model& model, const StabilityPoi
          << "set multiplot layout " << phases << ",1 title " << gnuplot_text(title.str()) << "\n"
          << "set xrange [" << x_hi + 0.5 << ":" << x_lo - 0.5 << "]\n"  // forward to the left
          << "set yrange [" << -y_half << ":" << y_half << "]\nset size ratio -1\nunset key\n"
-         << "set xlabel 'x, forward <- [m]'\nset ylabel 'y [m]'\nset grid\n";
+         << "set xlabel " << gnuplot_text(note.str()) << "\nset ylabel 'y [m]'\nset grid\n";
       for (int ph = 0; ph < phases; ++ph)
         gp << "set title 'phase " << 360 * ph / phases << " deg'\n"
            << "plot " << gnuplot_path(data) << " index 0 using 1:2 with lines lc rgb '#b0b0b0' "
@@ -158,6 +168,16 @@ std::vector<std::string> write_mode_plots(const Model& model, const StabilityPoi
       gp << "unset multiplot\nunset output\n";
       expected.push_back(file);
     }
+    // One period as an animated GIF (libgd terminal), one frame per phase step.
+    const std::string gif = base + "_animated.gif";
+    gp << "set terminal gif animate delay " << 160 / kAnimationFrames << " loop 0 size 1100,360 "
+       << "noenhanced\nset output " << gnuplot_text(gif) << "\nset size noratio\nset size ratio -1\n"
+       << "set title " << gnuplot_text(title.str()) << "\nset xlabel " << gnuplot_text(note.str())
+       << "\ndo for [f=0:" << kAnimationFrames - 1 << "] {\n  plot " << gnuplot_path(data)
+       << " index 0 using 1:2 with lines lc rgb '#b0b0b0' dt 2, '' index (" << phases + 1
+       << " + f) using 1:2:($3==0 ? 0xd62728 : $3==1 ? 0x2ca02c : 0x1f77b4) with lines lw 2 lc "
+          "rgb variable\n}\nunset output\n";
+    expected.push_back(gif);
     pngs.push_back(base + ".png");
   }
   outputs.write(script, [&](std::ostream& out) { out << gp.str(); });

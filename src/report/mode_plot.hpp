@@ -26,6 +26,9 @@
 namespace railstab {
 
 inline constexpr double kDrawnAmplitude_m = 0.45;
+// Below this share of kinetic energy in lateral, roll and yaw a mode is drawn
+// at rest (its lateral motion is round-off of a vertical-plane mode).
+inline constexpr double kMinDrawnLateralShare = 1e-6;
 inline constexpr double kAxleHalfLength_m = 1.0;
 inline constexpr double kFrameHalfWidth_m = 1.1, kFrameOverhang_m = 0.5;
 inline constexpr double kCarHalfWidth_m = 1.45, kCarOverhang_m = 2.5;
@@ -47,9 +50,10 @@ double plan_view_exaggeration(const std::vector<BodyOutline>& outlines, const Mo
 std::array<std::array<double, 2>, 5> displaced_outline(const BodyOutline& o, const ModeShape& shape,
                                                        double exaggeration, double phase_rad);
 
-// Adds <stem>_mode<k>_<name>_<V>mps.png and .svg (plus the data and the
-// gnuplot script) to `outputs` for each mode index in `modes` (into p.modes),
-// runs gnuplot; returns the PNG names.
+// Adds <stem>_mode<k>_<name>_<V>mps.png and .svg (`phases` panels) and
+// ..._animated.gif (one period, 16 frames), plus the data and the gnuplot
+// script, to `outputs` for each mode index in `modes` (into p.modes); runs
+// gnuplot; returns the PNG names.
 std::vector<std::string> write_mode_plots(const Model& model, const StabilityPoint& p,
                                           const std::vector<int>& modes, OutputSet& outputs,
                                           const std::string& stem, int phases = 4);

@@ -1,6 +1,7 @@
 // Plan-view mode plots (report/mode_plot.hpp): the drawn outlines move as the
-// small-yaw kinematics says; `railstab modes` writes a PNG and an SVG per
-// mode, named after the mode, and refuses a selection that matches nothing.
+// small-yaw kinematics says; `railstab modes` writes a PNG, an SVG and an
+// animated GIF per mode, named after the mode, and refuses a selection that
+// matches nothing.
 #include <gtest/gtest.h>
 
 #include "cli/run_cli.hpp"
@@ -9,6 +10,7 @@
 #include "setup/prepare_scene.hpp"
 
 #include <filesystem>
+#include <fstream>
 #include <unistd.h>
 
 using namespace railstab;
@@ -62,18 +64,26 @@ TEST(ModesCommand, WritesPngAndSvgPerModeAndRefusesAnEmptySelection) {
   const test::CliRun ok =
       test::run_railstab({"modes", scene, "--speed", "30", "--mode", "hunting", "--out", "o"}, dir);
   ASSERT_EQ(ok.exit_code, 0) << ok.output;
-  int png = 0, svg = 0;
+  int png = 0, svg = 0, gif = 0;
   for (const auto& e : fs::directory_iterator(dir / "o")) {
     const std::string name = e.path().filename().string();
     if (name.find("hunting") == std::string::npos) continue;
     if (e.path().extension() == ".png") ++png;
     if (e.path().extension() == ".svg") ++svg;
+    if (e.path().extension() == ".gif") {
+      ++gif;
+      std::ifstream in(e.path(), std::ios::binary);
+      char magic[6] = {};
+      in.read(magic, 6);
+      EXPECT_EQ(std::string(magic, 6), "GIF89a") << name;
+    }
     if (e.path().extension() == ".png" || e.path().extension() == ".svg") {
       EXPECT_GT(fs::file_size(e.path()), 1000u) << name;
     }
   }
   EXPECT_GE(png, 1);
   EXPECT_EQ(png, svg);
+  EXPECT_EQ(png, gif);
   const test::CliRun none = test::run_railstab(
       {"modes", scene, "--speed", "30", "--mode", "no such mode", "--out", "p"}, dir);
   EXPECT_NE(none.exit_code, 0);

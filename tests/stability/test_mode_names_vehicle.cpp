@@ -3,6 +3,7 @@
 // keeps its name over the grid and at the bisection point, body roles come
 // from the topology; the damping-ratio criterion is bisected like the real
 // part and lies below the critical speed.
+#include "report/mode_shape_report.hpp"
 #include "setup/prepare_scene.hpp"
 #include "stability/mode_names.hpp"
 #include "stability/speed_analysis.hpp"
@@ -112,4 +113,37 @@ TEST(ModeNamesOnVehicle, DampingRatioCriterionBisectedBelowTheCriticalSpeed) {
   EXPECT_LT(zeta, 0.051);
   EXPECT_LE(p.speed_m_per_s, r.damping_limit_speed_m_per_s + 1e-9);
   EXPECT_GT(p.speed_m_per_s, r.damping_limit_speed_m_per_s - 0.011);
+}
+
+// Energy shares of every mode at the critical speed sum to 1 (kinetic always,
+// potential where defined); kinetic shares are never negative; the reference
+// coordinate is a lateral one with amplitude 1 and phase 0 for the hunting mode.
+TEST(ModeNamesOnVehicle, EnergySharesOfEveryModeSumToOne) {
+  const CriticalSpeedResult& r = thesis_vehicle_result();
+  const PreparedScene s = prepare_scene(case_path("thesis_vehicle_tangent"), {});
+  const std::vector<ModeShape> shapes = full_mode_shapes(s.model, r.at_critical);
+  ASSERT_EQ(shapes.size(), r.at_critical.modes.size());
+  int defined = 0;
+  for (size_t i = 0; i < shapes.size(); ++i) {
+    if (r.at_critical.modes[i].neutral) continue;
+    double t = 0.0, v = 0.0;
+    for (const CoordinateMotion& c : shapes[i].coordinates) {
+      EXPECT_GE(c.kinetic_share, 0.0);
+      t += c.kinetic_share;
+      v += c.potential_share;
+    }
+    EXPECT_NEAR(t, 1.0, 1e-10) << r.at_critical.modes[i].name;
+    if (shapes[i].potential_defined) {
+      ++defined;
+      EXPECT_NEAR(v, 1.0, 1e-10) << r.at_critical.modes[i].name;
+    }
+  }
+  EXPECT_GT(defined, 10);
+  const ModeShape& hunting = shapes[size_t(r.at_critical.least_stable)];
+  ASSERT_GE(hunting.reference, 0);
+  const CoordinateMotion& ref = hunting.coordinates[size_t(hunting.reference)];
+  EXPECT_EQ(ref.coordinate, 1);
+  EXPECT_EQ(ref.displacement, std::complex<double>(1.0, 0.0));
+  for (const CoordinateMotion& c : hunting.coordinates)
+    if (c.coordinate == 1) EXPECT_LE(std::abs(c.displacement), 1.0 + 1e-12);
 }
