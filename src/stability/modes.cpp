@@ -21,11 +21,13 @@ std::vector<int> conjugate_partners(const std::vector<ModeReport>& modes) {
   std::vector<int> partner(modes.size(), -1);
   for (size_t i = 0; i < modes.size(); ++i) {
     if (modes[i].eigenvalue.imag() >= 0.0) continue;
-    double best = INFINITY;
+    // A real matrix has exact conjugate pairs; the solvers return them to
+    // round-off. ARPACK may return one of a pair only: then there is none.
+    double best = 1e-8 * std::max(1.0, std::abs(modes[i].eigenvalue));
     for (size_t j = 0; j < modes.size(); ++j) {
       if (modes[j].eigenvalue.imag() <= 0.0) continue;
       const double d = std::abs(modes[j].eigenvalue - std::conj(modes[i].eigenvalue));
-      if (d < best) {
+      if (d <= best) {
         best = d;
         partner[i] = int(j);
       }

@@ -76,7 +76,8 @@ int least_damped_mode(const std::vector<ModeReport>& modes, double max_frequency
                       double min_lateral_share = 0.5);
 
 // For each mode with Im < 0, the index of its conjugate partner (Im > 0,
-// nearest conj(lambda)); -1 for the others.
+// conj(lambda) within 1e-8 max(1, |lambda|)); -1 for the others and for a
+// mode whose partner the solver did not return (ARPACK's subset).
 std::vector<int> conjugate_partners(const std::vector<ModeReport>& modes);
 
 std::string coordinate_word(int coordinate);
