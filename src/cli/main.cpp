@@ -2,6 +2,7 @@
 // src/cli/*_command.cpp; this file only wires them and reports errors.
 #include "cli/check_command.hpp"
 #include "cli/contact_geometry_command.hpp"
+#include "cli/modes_command.hpp"
 #include "cli/simulate_command.hpp"
 #include "cli/stability_commands.hpp"
 #include "cli/verify_command.hpp"
@@ -18,6 +19,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   railstab::register_simulate_command(app);
   railstab::register_stability_commands(app);
+  railstab::register_modes_command(app);
   railstab::register_verify_command(app);
   railstab::register_work_precision_command(app);
   railstab::register_contact_geometry_command(app);

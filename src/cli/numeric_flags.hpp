@@ -40,6 +40,8 @@ inline const FlagRange cpu_budget_s{0.0, 86400.0, true, false, "s"};
 inline const FlagRange amplitude_m{1e-6, 0.01, false, false, "m"};
 inline const FlagRange periods{0.0, 1000.0, true, false, "periods"};
 inline const FlagRange settle_periods{0.0, 1000.0, false, true, "periods"};
+// A damping-ratio limit: a positive fraction of critical damping.
+inline const FlagRange damping_ratio{0.0, 1.0, true, true, ""};
 }  // namespace flag_ranges
 
 // A speed grid's size, bounded so a typo (--to 1e9, --step 1e-9) stops with

@@ -152,6 +152,10 @@ void register_stability_commands(CLI::App& app) {
     cmd->add_option("--step", opt->grid_step_m_per_s, "grid step (m/s)")
         ->capture_default_str()
         ->check(finite_in(flag_ranges::speed_step_m_per_s));
+    cmd->add_option("--min-damping-ratio", opt->min_damping_ratio,
+                    "also report the lowest speed where a mode in the hunting band has a damping "
+                    "ratio below this (e.g. 0.05), bisected like the critical speed")
+        ->check(finite_in(flag_ranges::damping_ratio));
     cmd->add_flag("!--no-plots", a->plots, "do not run gnuplot (data, JSON and report only)");
     cmd->callback([a, opt] { run_critical_speed(*a, *opt); });
   }

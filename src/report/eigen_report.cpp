@@ -2,6 +2,7 @@
 
 #include "io/file_names.hpp"
 #include "io/json_writer.hpp"
+#include "report/mode_shape_report.hpp"
 
 #include <iomanip>
 
@@ -17,7 +18,9 @@ void write_eigen_json(const Model& model, const StabilityPoint& p, OutputSet& ou
     j.key("removed_cyclic_states").begin_array();
     for (const std::string& r : p.linear.removed_states) j.value(r);
     j.end_array().key("modes").begin_array();
-    for (const ModeReport& m : p.modes)
+    const std::vector<ModeShape> shapes = full_mode_shapes(model, p);
+    for (size_t i = 0; i < p.modes.size(); ++i) {
+      const ModeReport& m = p.modes[i];
       j.begin_object()
           .field("real_per_s", m.eigenvalue.real())
           .field("imag_per_s", m.eigenvalue.imag())
@@ -25,8 +28,11 @@ void write_eigen_json(const Model& model, const StabilityPoint& p, OutputSet& ou
           .field("damping_ratio", m.damping_ratio)
           .field("neutral", m.neutral)
           .field("residual", m.residual)
-          .field("name", m.name)
-          .end_object();
+          .field("name", m.name);
+      j.key("shape");
+      write_mode_shape_json(j, model, shapes[i]);
+      j.end_object();
+    }
     j.end_array().end_object();
   });
 }

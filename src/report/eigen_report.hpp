@@ -11,7 +11,8 @@
 namespace railstab {
 
 // Adds <stem>_eigen_<V>mps.json (every mode: eigenvalue, frequency, damping
-// ratio, residual, name) to `outputs` (staged; the caller commits).
+// ratio, residual, name, shape with energy shares: report/mode_shape_report.hpp)
+// to `outputs` (staged; the caller commits).
 void write_eigen_json(const Model& model, const StabilityPoint& p, OutputSet& outputs,
                       const std::string& stem);
 

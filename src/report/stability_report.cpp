@@ -3,7 +3,10 @@
 #include "io/csv.hpp"
 #include "io/gnuplot.hpp"
 #include "io/json_writer.hpp"
+#include "report/markdown_text.hpp"
+#include "report/mode_shape_report.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <filesystem>
@@ -12,6 +15,47 @@
 #include <sstream>
 
 namespace railstab {
+
+StabilityVerdict stability_verdict(const CriticalSpeedResult& r) {
+  if (r.unstable_at_start) return StabilityVerdict::unstable_at_start;
+  if (r.critical_speed_found) return StabilityVerdict::critical_speed_found;
+  if (r.stable_in_range) return StabilityVerdict::stable_in_range;
+  return StabilityVerdict::stable_below_equilibrium_loss;
+}
+
+std::string verdict_key(StabilityVerdict v) {
+  switch (v) {
+    case StabilityVerdict::unstable_at_start: return "unstable_at_start";
+    case StabilityVerdict::critical_speed_found: return "critical_speed_found";
+    case StabilityVerdict::stable_in_range: return "stable_in_range";
+    case StabilityVerdict::stable_below_equilibrium_loss: return "stable_below_equilibrium_loss";
+  }
+  return "unknown";
+}
+
+std::string verdict_sentence(const CriticalSpeedResult& r) {
+  std::ostringstream s;
+  s << std::setprecision(6);
+  switch (stability_verdict(r)) {
+    case StabilityVerdict::unstable_at_start:
+      s << "already unstable at the lowest speed " << r.from_m_per_s << " m/s";
+      break;
+    case StabilityVerdict::critical_speed_found:
+      s << "critical speed " << std::fixed << std::setprecision(2) << r.critical_speed_m_per_s
+        << " m/s";
+      break;
+    case StabilityVerdict::stable_in_range:
+      s << "stable over the whole range " << r.from_m_per_s << " - " << r.to_m_per_s << " m/s";
+      break;
+    case StabilityVerdict::stable_below_equilibrium_loss:
+      s << "stable from " << r.from_m_per_s << " m/s up to "
+        << (r.grid.empty() ? r.from_m_per_s : r.grid.back().speed_m_per_s)
+        << " m/s only: no steady state from " << r.equilibrium_lost_at_m_per_s
+        << " m/s, so the range up to " << r.to_m_per_s << " m/s is not shown stable";
+      break;
+  }
+  return s.str();
+}
 
 namespace {
 
@@ -45,28 +89,63 @@ void write_eigenvalue_csv(std::ostream& out, const CriticalSpeedResult& r,
     }
 }
 
+// A tracked mode on the plots: its data block, name, colour and line.
+struct PlottedTrack {
+  int id = -1;
+  std::string name;
+  double mean_frequency_hz = 0.0;
+  bool hunting = false;
+};
+
+// Line colours, one per plotted track in legend order (ascending mean
+// frequency); past the tenth the colours repeat with another dash pattern.
+const char* const kTrackColours[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd",
+                                     "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22", "#17becf"};
+
 // One gnuplot data block per tracked mode (speed, real, frequency, damping),
-// only for modes below the frequency cap.
-int write_track_blocks(std::ostream& out, const CriticalSpeedResult& r,
-                       const std::vector<std::vector<int>>& ids, double max_hz) {
+// only for modes below the frequency cap, in ascending mean frequency (the
+// legend order); returns the blocks in file order. The hunting track is the
+// one holding the mode that decides the critical speed (or, without one, the
+// least damped mode at the highest speed).
+std::vector<PlottedTrack> write_track_blocks(std::ostream& out, const CriticalSpeedResult& r,
+                                             const std::vector<std::vector<int>>& ids,
+                                             double max_hz) {
   std::map<int, std::vector<std::array<double, 4>>> tracks;
+  std::map<int, std::string> names;
   for (size_t i = 0; i < r.grid.size(); ++i)
     for (size_t j = 0; j < r.grid[i].modes.size(); ++j) {
       const ModeReport& m = r.grid[i].modes[j];
       if (ids[i][j] < 0 || m.frequency_hz > max_hz) continue;
       tracks[ids[i][j]].push_back(
           {r.grid[i].speed_m_per_s, m.eigenvalue.real(), m.frequency_hz, m.damping_ratio});
+      names[ids[i][j]] = m.name;
     }
-  int blocks = 0;
+  std::string hunting_name;
+  if (r.critical_speed_found || r.unstable_at_start) {
+    if (r.at_critical.least_stable >= 0)
+      hunting_name = r.at_critical.modes[size_t(r.at_critical.least_stable)].name;
+  } else if (!r.grid.empty() && r.grid.back().least_damped >= 0) {
+    hunting_name = r.grid.back().modes[size_t(r.grid.back().least_damped)].name;
+  }
+  std::vector<PlottedTrack> plotted;
+  for (const auto& track : tracks) {
+    if (track.second.size() < 2) continue;
+    PlottedTrack t;
+    t.id = track.first;
+    t.name = names[t.id];
+    for (const auto& p : track.second) t.mean_frequency_hz += p[2] / double(track.second.size());
+    t.hunting = !hunting_name.empty() && t.name == hunting_name;
+    plotted.push_back(t);
+  }
+  std::stable_sort(plotted.begin(), plotted.end(), [](const PlottedTrack& a, const PlottedTrack& b) {
+    return a.mean_frequency_hz < b.mean_frequency_hz;
+  });
   out << std::setprecision(10) << "# speed_m_s real_per_s frequency_hz damping_ratio, one block "
                                   "per tracked mode\n";
-  for (const auto& track : tracks) {
-    // (Not a structured binding: clang 14 cannot capture one in the lambda.)
-    const int id = track.first;
-    const auto& points = track.second;
-    if (points.size() < 2) continue;
-    out << "# track " << id << "\n";
-    for (const auto& p : points) {
+  for (const PlottedTrack& t : plotted) {
+    const int id = t.id;
+    out << "# track " << id << ": " << gnuplot_text(t.name) << "\n";
+    for (const auto& p : tracks[id]) {
       for (int k = 0; k < 4; ++k) {
         if (k) out << ' ';
         put_csv_number(out, p[k], [&] {
@@ -76,60 +155,108 @@ int write_track_blocks(std::ostream& out, const CriticalSpeedResult& r,
       out << '\n';
     }
     out << "\n\n";
-    ++blocks;
   }
-  return blocks;
+  return plotted;
+}
+
+// The plot clause of every track for columns `x:y` of the tracks file: one
+// colour per mode (the same in every plot), the hunting mode thick and
+// marked in the legend; `using_columns` may hold a gnuplot expression of $n.
+std::string track_plot_clauses(const std::vector<PlottedTrack>& tracks, const std::string& file,
+                               const std::string& using_columns, const std::string& style) {
+  if (tracks.empty()) return "NaN notitle";
+  std::ostringstream p;
+  for (size_t k = 0; k < tracks.size(); ++k) {
+    const PlottedTrack& t = tracks[k];
+    if (k) p << ", \\\n     ";
+    p << gnuplot_path(file) << " index " << k << " using " << using_columns << " with " << style
+      << " lc rgb '" << kTrackColours[k % 10] << "' dt " << 1 + int(k / 10) % 4 << " lw "
+      << (t.hunting ? 4.0 : 1.5) << " title "
+      << gnuplot_text(t.hunting ? t.name + "  [critical mode]" : t.name);
+  }
+  return p.str();
 }
 
 // Ranges on both axes are explicit: with no plottable point (a one-speed
 // grid, every mode above the band) gnuplot's autoscale fails ("x range is
-// invalid"); with them the plot is made, empty.
+// invalid"); with them the plot is made, empty. Each plot is written as PNG
+// and, by `replot` on the svg terminal, as SVG.
 std::vector<std::string> plot_stability(OutputSet& outputs, const std::string& stem,
-                                        const std::string& csv, const std::string& tracks,
-                                        int n_tracks, const CriticalSpeedResult& r,
-                                        const std::string& title, double max_hz) {
+                                        const std::string& tracks_file,
+                                        const std::vector<PlottedTrack>& tracks,
+                                        const CriticalSpeedResult& r, const std::string& title,
+                                        double max_hz) {
   const std::string script = stem + "_stability_plots.gp";
-  std::vector<std::string> pngs = {stem + "_root_locus.png", stem + "_damping_vs_speed.png",
-                                   stem + "_frequency_vs_speed.png"};
+  const std::vector<std::string> kinds = {"_root_locus", "_damping_vs_speed", "_frequency_vs_speed"};
+  std::vector<std::string> pngs, all;
+  for (const std::string& k : kinds) {
+    pngs.push_back(stem + k + ".png");
+    all.push_back(stem + k + ".png");
+    all.push_back(stem + k + ".svg");
+  }
   const double v_lo = r.from_m_per_s, v_hi = r.to_m_per_s > r.from_m_per_s ? r.to_m_per_s
                                                                           : r.from_m_per_s + 1.0;
-  auto titled = [&](const std::string& what) { return gnuplot_text(title + ": " + what); };
+  std::ostringstream range;
+  range << v_lo << " - " << v_hi << " m/s";
+  auto titled = [&](const std::string& what) {
+    return gnuplot_text(title + ": " + what + " (" + range.str() + ")");
+  };
   std::ostringstream band;
   band << max_hz;
+  const bool critical = r.critical_speed_found;
+  const double vc = critical ? r.critical_speed_m_per_s : NAN;
+  double fc = NAN;
+  if (critical && r.at_critical.least_stable >= 0)
+    fc = r.at_critical.modes[size_t(r.at_critical.least_stable)].frequency_hz;
+  const std::string png_terminal =
+      "set terminal pngcairo size 1200,620 font 'Sans,10' noenhanced\n";
+  const std::string svg_terminal = "set terminal svg size 1200,620 dynamic font 'Sans,10' noenhanced\n";
   outputs.write(script, [&](std::ostream& gp) {
     gp << "# Run from the output folder: gnuplot " << script << "\n"
-       << "set datafile separator ','\nset terminal pngcairo size 900,560 font 'Sans,10' "
-          "noenhanced\nset grid\n";
-    gp << "set output " << gnuplot_text(pngs[0]) << "\nset title "
-       << titled("root locus, real part >= -20 1/s (colour = speed)") << "\n"
-       << "set xlabel 'real part [1/s]'\nset arrow 2 from 0, graph 0 to 0, graph 1 nohead lc 'black'\n"
-       << "set ylabel 'frequency [Hz]'\nset cblabel 'speed [m/s]'\nset palette rgb 33,13,10\n"
-       << "set yrange [0:" << max_hz << "]\nset xrange [-20:*]\nset cbrange [" << v_lo << ":"
-       << v_hi << "]\n"
-       << "plot " << gnuplot_path(csv) << " skip 1 using 3:($5<=" << max_hz
-       << " && $7==0 && $3>=-20 ? $5 : 1/0):1 with points pt 7 ps 0.6 palette notitle\n";
-    gp << "set datafile separator whitespace\nunset yrange\nunset xrange\nset autoscale\n"
-       << "unset cblabel\nunset arrow 2\nset xrange [" << v_lo << ":" << v_hi << "]\n";
-    const double vc = r.critical_speed_found ? r.critical_speed_m_per_s : NAN;
+       << "# Each curve is one mode, tracked over speed by eigenvector continuity, named from\n"
+       << "# its shape; the same mode has the same colour in every plot.\n"
+       << "set datafile separator whitespace\n" << png_terminal << "set grid\n"
+       << "set key outside right top vertical Left reverse noenhanced font ',9' spacing 1.1\n";
+    auto emit = [&](size_t k, const std::string& plot) {
+      gp << "set output " << gnuplot_text(pngs[k]) << "\n" << plot << "\n"
+         << svg_terminal << "set output " << gnuplot_text(stem + kinds[k] + ".svg") << "\nreplot\n"
+         << "unset output\n" << png_terminal;
+    };
+    gp << "set title " << titled("root locus of the modes below " + band.str() + " Hz, real part >= -20 1/s")
+       << "\nset xlabel 'real part of the eigenvalue [1/s]'\nset ylabel 'frequency [Hz]'\n"
+       << "set arrow 2 from 0, graph 0 to 0, graph 1 nohead lc 'black'\n"
+       << "set yrange [0:" << max_hz << "]\nset xrange [-20:*]\n";
+    if (std::isfinite(vc) && std::isfinite(fc))
+      gp << "set label 3 'V_crit = " << std::fixed << std::setprecision(2) << vc
+         << " m/s' at 0, " << std::defaultfloat << std::setprecision(8) << fc
+         << " point pt 3 ps 2 lc 'red' offset 1,1\n";
+    emit(0, "plot " + track_plot_clauses(tracks, tracks_file, "($2>=-20 ? $2 : 1/0):3",
+                                         "linespoints pt 7 ps 0.4"));
+    gp << "unset label 3\nunset arrow 2\nunset yrange\nunset xrange\nset autoscale\n"
+       << std::defaultfloat << std::setprecision(8) << "set xrange [" << v_lo << ":" << v_hi
+       << "]\n";
     if (std::isfinite(vc))
       gp << "set arrow 1 from " << vc << ", graph 0 to " << vc
-         << ", graph 1 nohead dt 2 lc 'red'\nset label 1 'V_crit = " << std::fixed
-         << std::setprecision(2) << vc << " m/s' at " << vc << ", graph 0.95 offset 1,0\n"
-         << std::defaultfloat << std::setprecision(6);
-    gp << "set output " << gnuplot_text(pngs[1]) << "\nset title "
-       << titled("damping ratio of the modes below " + band.str() + " Hz")
+         << ", graph 1 nohead dt 2 lw 2 lc 'red'\nset label 1 'V_crit = " << std::fixed
+         << std::setprecision(2) << vc << " m/s' at " << vc << ", graph 0.95 offset 1,0 tc 'red'\n"
+         << std::defaultfloat << std::setprecision(8);
+    if (r.damping_limit_found)
+      gp << "set arrow 4 from " << r.damping_limit_speed_m_per_s << ", graph 0 to "
+         << r.damping_limit_speed_m_per_s << ", graph 1 nohead dt 3 lw 2 lc 'dark-orange'\n"
+         << "set label 4 'damping ratio < " << r.min_damping_ratio << " at " << std::fixed
+         << std::setprecision(2) << r.damping_limit_speed_m_per_s << " m/s' at "
+         << r.damping_limit_speed_m_per_s << ", graph 0.88 offset 1,0 tc 'dark-orange'\n"
+         << std::defaultfloat << std::setprecision(8);
+    gp << "set title " << titled("damping ratio of the modes below " + band.str() + " Hz")
        << "\nset xlabel 'speed [m/s]'\nset ylabel 'damping ratio [-]'\n"
        << "set xzeroaxis lt -1\nset yrange [-0.2:1]\n";
-    gp << "plot for [i=0:" << std::max(0, n_tracks - 1) << "] " << gnuplot_path(tracks)
-       << " index i using 1:4 with lines lw 1.5 notitle\n";
-    gp << "set output " << gnuplot_text(pngs[2]) << "\nset title "
-       << titled("frequency of the modes below " + band.str() + " Hz")
+    emit(1, "plot " + track_plot_clauses(tracks, tracks_file, "1:4", "lines"));
+    gp << "set title " << titled("frequency of the modes below " + band.str() + " Hz")
        << "\nset ylabel 'frequency [Hz]'\nset yrange [0:" << max_hz << "]\n";
-    gp << "plot for [i=0:" << std::max(0, n_tracks - 1) << "] " << gnuplot_path(tracks)
-       << " index i using 1:3 with lines lw 1.5 notitle\n";
+    emit(2, "plot " + track_plot_clauses(tracks, tracks_file, "1:3", "lines"));
   });
-  for (const std::string& png : pngs) outputs.add(png);
-  run_gnuplot(script, outputs.staging_dir(), pngs);
+  for (const std::string& f : all) outputs.add(f);
+  run_gnuplot(script, outputs.staging_dir(), all);
   return pngs;
 }
 
@@ -151,7 +278,7 @@ void write_mode_json(JsonWriter& j, const ModeReport& m) {
 }
 
 void write_json(std::ostream& out, const Model& model, const CriticalSpeedResult& r,
-                const std::string& solver) {
+                const std::string& solver, double max_hz) {
   {
     JsonWriter j(out);
     j.begin_object().field("scene", model.name).field("source", model.source_path);
@@ -162,6 +289,7 @@ void write_json(std::ostream& out, const Model& model, const CriticalSpeedResult
     else
       j.key("partial_reason").null();
     j.field("stable_in_range", r.stable_in_range).field("unstable_at_start", r.unstable_at_start);
+    j.field("verdict", verdict_key(stability_verdict(r))).field("verdict_text", verdict_sentence(r));
     if (r.equilibrium_lost_at_m_per_s > 0.0)
       j.field("equilibrium_lost_at_m_s", r.equilibrium_lost_at_m_per_s)
           .field("equilibrium_error", r.equilibrium_error);
@@ -172,9 +300,27 @@ void write_json(std::ostream& out, const Model& model, const CriticalSpeedResult
           .field("frequency_hz", m.frequency_hz)
           .field("damping_ratio", m.damping_ratio)
           .field("mode", m.name);
+      const std::vector<ModeShape> shapes = full_mode_shapes(model, r.at_critical);
       j.key("mode_shape").begin_object();
       write_mode_json(j, m);
+      j.key("shape");
+      write_mode_shape_json(j, model, shapes[size_t(r.at_critical.least_stable)]);
       j.end_object();
+      // Every oscillatory mode up to the plotted band at the stable side of
+      // the final bracket, with its shape: what a client compares the
+      // hunting mode with.
+      j.field("modes_at_critical_speed_m_s", r.at_critical.speed_m_per_s);
+      j.key("modes_at_critical_speed").begin_array();
+      for (size_t i = 0; i < r.at_critical.modes.size(); ++i) {
+        const ModeReport& mi = r.at_critical.modes[i];
+        if (mi.neutral || mi.eigenvalue.imag() <= 0.0 || mi.frequency_hz > max_hz) continue;
+        j.begin_object();
+        write_mode_json(j, mi);
+        j.key("shape");
+        write_mode_shape_json(j, model, shapes[i]);
+        j.end_object();
+      }
+      j.end_array();
     } else {
       j.key("critical_speed_m_s").null().key("frequency_hz").null().key("mode").null();
     }
@@ -198,27 +344,38 @@ void write_json(std::ostream& out, const Model& model, const CriticalSpeedResult
         j.end_object();
       }
     j.end_array();
-    j.key("least_stable_by_speed").begin_array();
+    j.key("damping_ratio_criterion");
+    if (r.min_damping_ratio > 0.0) {
+      j.begin_object()
+          .field("min_damping_ratio", r.min_damping_ratio)
+          .field("below_at_start", r.damping_below_at_start)
+          .field("found", r.damping_limit_found);
+      const StabilityPoint& p = r.at_damping_limit;
+      if (r.damping_limit_found)
+        j.field("speed_m_s", r.damping_limit_speed_m_per_s)
+            .field("speed_tolerance_m_s", r.speed_tolerance_m_per_s);
+      else
+        j.key("speed_m_s").null();
+      if ((r.damping_limit_found || r.damping_below_at_start) && p.least_damped >= 0) {
+        j.key("mode").begin_object();
+        write_mode_json(j, p.modes[size_t(p.least_damped)]);
+        j.end_object();
+      }
+      j.end_object();
+    } else {
+      j.null();
+    }
+    // Ranked by damping ratio (modes/least_damped_mode): a decaying real
+    // root (ratio 1) never fills the table; the stability decision itself
+    // is the real part (least_stable).
+    j.key("least_damped_by_speed").begin_array();
     for (const StabilityPoint& p : r.grid) {
       j.begin_object().field("speed_m_s", p.speed_m_per_s);
-      if (p.least_stable >= 0) write_mode_json(j, p.modes[p.least_stable]);
+      if (p.least_damped >= 0) write_mode_json(j, p.modes[size_t(p.least_damped)]);
       j.end_object();
     }
     j.end_array().end_object();
   }
-}
-
-// User text in Markdown: one line, no table-cell break, no code-span end.
-std::string md_text(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    const unsigned char u = static_cast<unsigned char>(c);
-    if (u < 0x20 || u == 0x7F) out += ' ';
-    else if (c == '|' || c == '`' || c == '\\' || c == '<' || c == '>')
-      out += std::string("\\") + c;
-    else out += c;
-  }
-  return out;
 }
 
 void write_markdown(std::ostream& md_out, const Model& model, const CriticalSpeedResult& r,
@@ -240,12 +397,27 @@ void write_markdown(std::ostream& md_out, const Model& model, const CriticalSpee
       md << "No steady state at " << r.equilibrium_lost_at_m_per_s
          << " m/s and above (" << md_text(r.equilibrium_error) << "); the analysis covers the speeds "
          << "below.\n\n";
-    if (r.unstable_at_start) {
-      md << "**Already unstable at " << r.from_m_per_s << " m/s**: lower the start speed.\n\n";
-    } else if (!r.critical_speed_found) {
-      md << "**Stable over the whole range analysed** (no non-neutral mode crosses into the "
-            "right half-plane).\n\n";
-    } else {
+    md << "Verdict: **" << verdict_sentence(r) << "**";
+    if (stability_verdict(r) == StabilityVerdict::unstable_at_start)
+      md << ": lower the start speed";
+    else if (stability_verdict(r) != StabilityVerdict::critical_speed_found)
+      md << " (no non-neutral mode crosses into the right half-plane)";
+    md << ".\n\n";
+    if (r.min_damping_ratio > 0.0) {
+      md << "Damping-ratio criterion " << r.min_damping_ratio << ": ";
+      const StabilityPoint& p = r.at_damping_limit;
+      if (r.damping_below_at_start)
+        md << "already below it at " << r.from_m_per_s << " m/s";
+      else if (r.damping_limit_found)
+        md << "a mode's damping ratio falls below it at **" << std::fixed << std::setprecision(2)
+           << r.damping_limit_speed_m_per_s << " m/s**" << std::defaultfloat << std::setprecision(4);
+      else
+        md << "met over the whole grid";
+      if ((r.damping_below_at_start || r.damping_limit_found) && p.least_damped >= 0)
+        md << " (" << md_text(p.modes[size_t(p.least_damped)].name) << ")";
+      md << ".\n\n";
+    }
+    if (r.critical_speed_found) {
       const ModeReport& m = r.at_critical.modes[r.at_critical.least_stable];
       md << "| result | value |\n|---|---|\n"
          << "| critical speed | **" << std::fixed << std::setprecision(2)
@@ -256,12 +428,10 @@ void write_markdown(std::ostream& md_out, const Model& model, const CriticalSpee
          << (m.frequency_hz > 0.0 ? r.critical_speed_m_per_s / m.frequency_hz : 0.0)
          << " m |\n"
          << "| damping ratio at the stable side | " << m.damping_ratio << " |\n"
-         << "| mode | " << md_text(m.name) << " |\n\n"
-         << "Mode shape (kinetic-energy share):\n\n| body | coordinate | share |\n|---|---|---|\n";
-      for (const Participation& p : m.participation)
-        md << "| " << md_text(p.body) << " | " << coordinate_word(p.coordinate) << " | " << p.share
-           << " |\n";
-      md << "\n";
+         << "| mode | " << md_text(m.name) << " |\n\n";
+      write_mode_shape_markdown(
+          md, model, full_mode_shapes(model, r.at_critical)[size_t(r.at_critical.least_stable)]);
+      md << std::setprecision(4);
     }
     for (const StabilityPoint& p : r.grid)
       if (!p.validity_warning.empty()) {
@@ -276,11 +446,12 @@ void write_markdown(std::ostream& md_out, const Model& model, const CriticalSpee
            << " 1/s (wheel-rail contact mode; the Hertz contact has no damping)\n";
         break;
       }
-    md << "\nLeast stable mode by speed:\n\n| speed [m/s] | real part [1/s] | frequency [Hz] | "
-          "damping ratio | mode |\n|---|---|---|---|---|\n";
+    md << "\nLeast damped mode by speed (smallest damping ratio in the hunting band):\n\n"
+          "| speed [m/s] | real part [1/s] | frequency [Hz] | damping ratio | mode |\n"
+          "|---|---|---|---|---|\n";
     for (const StabilityPoint& p : r.grid) {
-      if (p.least_stable < 0) continue;
-      const ModeReport& m = p.modes[p.least_stable];
+      if (p.least_damped < 0) continue;
+      const ModeReport& m = p.modes[size_t(p.least_damped)];
       md << "| " << p.speed_m_per_s << " | " << m.eigenvalue.real() << " | " << m.frequency_hz
          << " | " << m.damping_ratio << " | " << md_text(m.name) << " |\n";
     }
@@ -298,7 +469,9 @@ std::vector<std::string> stability_file_names(const std::string& stem) {
   return {stem + "_eigenvalues.csv",       stem + "_tracks.dat",
           stem + "_stability_plots.gp",    stem + "_root_locus.png",
           stem + "_damping_vs_speed.png",  stem + "_frequency_vs_speed.png",
-          stem + "_critical_speed.json",   stem + "_critical_speed.md"};
+          stem + "_root_locus.svg",        stem + "_damping_vs_speed.svg",
+          stem + "_frequency_vs_speed.svg", stem + "_critical_speed.json",
+          stem + "_critical_speed.md"};
 }
 
 StabilityFiles write_stability_results(const Model& model, const CriticalSpeedResult& result,
@@ -312,7 +485,9 @@ StabilityFiles write_stability_results(const Model& model, const CriticalSpeedRe
   outputs.write(files.csv, [&](std::ostream& out) { write_eigenvalue_csv(out, result, ids); });
   files.json = stem + "_critical_speed.json";
   outputs.write(files.json,
-                [&](std::ostream& out) { write_json(out, model, result, eigen_solver_name); });
+                [&](std::ostream& out) {
+                  write_json(out, model, result, eigen_solver_name, max_plot_frequency_hz);
+                });
   if (plots)
     files.plots = {stem + "_root_locus.png", stem + "_damping_vs_speed.png",
                    stem + "_frequency_vs_speed.png"};
@@ -322,11 +497,11 @@ StabilityFiles write_stability_results(const Model& model, const CriticalSpeedRe
   });
   if (plots) {
     const std::string tracks = stem + "_tracks.dat";
-    int n_tracks = 0;
+    std::vector<PlottedTrack> plotted;
     outputs.write(tracks, [&](std::ostream& out) {
-      n_tracks = write_track_blocks(out, result, ids, max_plot_frequency_hz);
+      plotted = write_track_blocks(out, result, ids, max_plot_frequency_hz);
     });
-    files.plots = plot_stability(outputs, stem, files.csv, tracks, n_tracks, result, model.name,
+    files.plots = plot_stability(outputs, stem, tracks, plotted, result, model.name,
                                  max_plot_frequency_hz);
   }
   return files;
@@ -335,12 +510,8 @@ StabilityFiles write_stability_results(const Model& model, const CriticalSpeedRe
 void print_critical_speed_summary(std::ostream& out, const Model& model,
                                   const CriticalSpeedResult& r, double hunting_band_hz) {
   out << std::setprecision(6);
-  if (r.unstable_at_start) {
-    out << model.name << ": already unstable at " << r.from_m_per_s << " m/s\n";
-  } else if (!r.critical_speed_found) {
-    const double top = r.grid.back().speed_m_per_s;
-    out << model.name << ": stable over the whole range analysed " << r.from_m_per_s << " - "
-        << top << " m/s\n";
+  if (!r.critical_speed_found) {
+    out << model.name << ": " << verdict_sentence(r) << "\n";
   } else {
     const ModeReport& m = r.at_critical.modes[r.at_critical.least_stable];
     out << model.name << ": critical speed " << std::fixed << std::setprecision(2)
@@ -348,6 +519,19 @@ void print_critical_speed_summary(std::ostream& out, const Model& model,
         << std::defaultfloat << std::setprecision(5) << ", frequency " << m.frequency_hz
         << " Hz, mode " << m.name << "\n";
   }
+  if (r.damping_limit_found) {
+    out << "damping ratio below " << r.min_damping_ratio << " from " << std::fixed
+        << std::setprecision(2) << r.damping_limit_speed_m_per_s << " m/s" << std::defaultfloat
+        << std::setprecision(6);
+    const StabilityPoint& p = r.at_damping_limit;
+    if (p.least_damped >= 0) out << " (" << p.modes[size_t(p.least_damped)].name << ")";
+    out << "\n";
+  }
+  else if (r.damping_below_at_start)
+    out << "damping ratio already below " << r.min_damping_ratio << " at " << r.from_m_per_s
+        << " m/s\n";
+  else if (r.min_damping_ratio > 0.0)
+    out << "damping ratio at least " << r.min_damping_ratio << " over the whole grid\n";
   if (r.partial)
     out << "partial result: " << r.partial_reason << "\n";
   else if (r.equilibrium_lost_at_m_per_s > 0.0)

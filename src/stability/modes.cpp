@@ -1,5 +1,7 @@
 #include "stability/modes.hpp"
 
+#include "stability/mode_names.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -15,10 +17,29 @@ double neutral_threshold(const Eigen::MatrixXd& A) {
   return 1e-9 * std::max(1.0, A.norm());
 }
 
+std::vector<int> conjugate_partners(const std::vector<ModeReport>& modes) {
+  std::vector<int> partner(modes.size(), -1);
+  for (size_t i = 0; i < modes.size(); ++i) {
+    if (modes[i].eigenvalue.imag() >= 0.0) continue;
+    // A real matrix has exact conjugate pairs; the solvers return them to
+    // round-off. ARPACK may return one of a pair only: then there is none.
+    double best = 1e-8 * std::max(1.0, std::abs(modes[i].eigenvalue));
+    for (size_t j = 0; j < modes.size(); ++j) {
+      if (modes[j].eigenvalue.imag() <= 0.0) continue;
+      const double d = std::abs(modes[j].eigenvalue - std::conj(modes[i].eigenvalue));
+      if (d <= best) {
+        best = d;
+        partner[i] = int(j);
+      }
+    }
+  }
+  return partner;
+}
+
 std::vector<ModeReport> describe_modes(const Model& model, const LinearModel& lin,
                                        const std::vector<EigenPair>& pairs) {
   const double zero = neutral_threshold(lin.A);
-  const int n = model.n_coordinates;
+  const BodyRoles roles = body_roles(model);
   std::vector<ModeReport> modes;
   modes.reserve(pairs.size());
   for (const EigenPair& p : pairs) {
@@ -30,40 +51,30 @@ std::vector<ModeReport> describe_modes(const Model& model, const LinearModel& li
     m.residual = p.residual;
     m.neutral = std::abs(p.value) <= zero;
     m.vector = p.vector;
-    // Kinetic energy per (body, coordinate) from the rate part of the vector.
-    double total = 0.0;
+    m.shape = mode_shape(model, lin, Eigen::MatrixXd(), p.value, p.vector);
     std::vector<Participation> parts;
-    for (size_t i = 0; i < lin.kept_states.size(); ++i) {
-      const int k = lin.kept_states[i];
-      if (!model.is_rate(k)) continue;  // positions and element states carry no kinetic energy
-      const auto [b, c] = model.coordinate_of_state[k - n];
-      const Body& body = model.bodies[b];
-      const double inertia = c < 3 ? body.mass_kg : body.inertia_kg_m2(c - 3);
-      const double e = inertia * std::norm(p.vector(Eigen::Index(i)));
-      total += e;
-      if (c == 1 || c == 3 || c == 5) m.lateral_share += e;
-      parts.push_back({body.name, c, e});
+    for (const CoordinateMotion& c : m.shape.coordinates) {
+      if (c.coordinate == 1 || c.coordinate == 3 || c.coordinate == 5)
+        m.lateral_share += c.kinetic_share;
+      parts.push_back({model.bodies[size_t(c.body)].name, c.coordinate, c.kinetic_share});
     }
-    if (total > 0.0) {
-      for (Participation& q : parts) q.share /= total;
-      m.lateral_share /= total;
-    }
-    std::sort(parts.begin(), parts.end(),
-              [](const Participation& a, const Participation& b) { return a.share > b.share; });
+    std::stable_sort(parts.begin(), parts.end(), [](const Participation& a, const Participation& b) {
+      return a.share > b.share;
+    });
     if (parts.size() > 6) parts.resize(6);
     m.participation = parts;
-    if (m.neutral) {
-      m.name = "neutral (rigid-body/cyclic)";
-    } else if (!parts.empty()) {
-      // The dominant body, with each of its coordinates holding at least a
-      // quarter of the dominant share.
-      m.name = parts[0].body + " " + coordinate_word(parts[0].coordinate);
-      for (size_t j = 1; j < parts.size(); ++j)
-        if (parts[j].body == parts[0].body && parts[j].share >= 0.25 * parts[0].share)
-          m.name += "/" + coordinate_word(parts[j].coordinate);
-    }
+    m.shape_name = m.neutral ? "neutral (rigid-body/cyclic)"
+                             : mode_name_from_shape(model, roles, m.shape, p.value);
     modes.push_back(std::move(m));
   }
+  std::vector<std::string> names;
+  std::vector<double> damping;
+  for (const ModeReport& m : modes) {
+    names.push_back(m.shape_name);
+    damping.push_back(m.damping_ratio);
+  }
+  make_names_unique(names, conjugate_partners(modes), damping);
+  for (size_t i = 0; i < modes.size(); ++i) modes[i].name = names[i];
   return modes;
 }
 
@@ -92,6 +103,26 @@ int least_stable_where(const std::vector<ModeReport>& modes, double max_frequenc
 
 int least_stable_mode(const std::vector<ModeReport>& modes, double max_frequency_hz) {
   return least_stable_where(modes, max_frequency_hz, [](const ModeReport&) { return true; });
+}
+
+int least_damped_mode(const std::vector<ModeReport>& modes, double max_frequency_hz,
+                      double min_lateral_share) {
+  int best = -1;
+  for (int i = 0; i < int(modes.size()); ++i) {
+    const ModeReport& m = modes[size_t(i)];
+    if (m.neutral || m.frequency_hz > max_frequency_hz || m.eigenvalue.imag() < 0.0 ||
+        m.lateral_share < min_lateral_share)
+      continue;
+    if (best < 0) {
+      best = i;
+      continue;
+    }
+    const ModeReport& b = modes[size_t(best)];
+    if (m.damping_ratio < b.damping_ratio ||
+        (m.damping_ratio == b.damping_ratio && m.eigenvalue.real() > b.eigenvalue.real()))
+      best = i;
+  }
+  return best;
 }
 
 int least_stable_lateral_mode(const std::vector<ModeReport>& modes, double max_frequency_hz,

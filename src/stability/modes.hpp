@@ -1,10 +1,12 @@
 #pragma once
-// Modes of a linearised model: frequency, damping ratio, a name from the
-// kinetic-energy participation of (body, coordinate), and the neutral /
-// rigid-body classification that keeps them out of the stability decision.
+// Modes of a linearised model: frequency, damping ratio, the mode shape
+// (stability/mode_shape.hpp), a name from the shape (stability/mode_names.hpp),
+// and the neutral / rigid-body classification that keeps them out of the
+// stability decision.
 #include "eigen/eigen_analysis.hpp"
 #include "linear/linearization.hpp"
 #include "model/model.hpp"
+#include "stability/mode_shape.hpp"
 
 #include <complex>
 #include <string>
@@ -24,7 +26,14 @@ struct ModeReport {
   double damping_ratio = 0.0;
   double residual = 0.0;  // eigenpair residual (scale free)
   bool neutral = false;   // |lambda| at round-off level: rigid-body / cyclic
-  std::string name;       // e.g. "wheelset1 lateral/yaw"
+  // Unique within the analysis, e.g. "bogie hunting, bogies in phase",
+  // "car body lower sway (2)"; the conjugate partner (Im < 0) has its
+  // mate's name.
+  std::string name;
+  std::string shape_name;  // from the shape alone, before making names unique
+  // Displacements and kinetic shares (potential shares need the stiffness:
+  // mode_shape with suspension_stiffness, done where a report wants them).
+  ModeShape shape;
   std::vector<Participation> participation;  // largest first (at most 6)
   // Share of the kinetic energy in the lateral plane (lateral, roll and yaw
   // of every body): near 1 for hunting and sway, near 0 for bounce, pitch
@@ -35,6 +44,8 @@ struct ModeReport {
 
 // Kinetic-energy participation: share_k ~ M_k |v_rate_k|^2 with M_k the mass
 // (translations) or the principal inertia (rotations) of that coordinate.
+// Names from the shapes, unique among `pairs` (suffixes in ascending damping
+// ratio: the least damped of a name keeps it plain).
 std::vector<ModeReport> describe_modes(const Model& model, const LinearModel& lin,
                                        const std::vector<EigenPair>& pairs);
 
@@ -50,6 +61,24 @@ int least_stable_mode(const std::vector<ModeReport>& modes, double max_frequency
 // least min_lateral_share (the candidates for hunting), or -1.
 int least_stable_lateral_mode(const std::vector<ModeReport>& modes, double max_frequency_hz,
                               double min_lateral_share = 0.5);
+
+// Index of the least damped non-neutral lateral-plane mode at or below
+// max_frequency_hz: smallest damping ratio (a real root has ratio 1 when it
+// decays, -1 when it grows, so a decaying overdamped root never outranks an
+// oscillatory mode); among equal ratios the larger real part; -1 if none.
+// Lateral-plane: lateral_share >= min_lateral_share (hunting, sway, yaw; a
+// lightly damped longitudinal or bounce mode is not a lateral-stability
+// concern and would otherwise fill the tables: the thesis vehicle's bogie
+// longitudinal modes, 1.06 Hz, ratio 0.005, at every speed). Unstable modes
+// of any kind still decide stability through least_stable_mode. Conjugate
+// partners with Im < 0 are skipped.
+int least_damped_mode(const std::vector<ModeReport>& modes, double max_frequency_hz,
+                      double min_lateral_share = 0.5);
+
+// For each mode with Im < 0, the index of its conjugate partner (Im > 0,
+// conj(lambda) within 1e-8 max(1, |lambda|)); -1 for the others and for a
+// mode whose partner the solver did not return (ARPACK's subset).
+std::vector<int> conjugate_partners(const std::vector<ModeReport>& modes);
 
 std::string coordinate_word(int coordinate);
 

@@ -2,7 +2,10 @@
 
 #include "setup/model_error_context.hpp"
 
+#include "stability/mode_names.hpp"
+
 #include <algorithm>
+#include <map>
 #include <chrono>
 #include <cmath>
 #include <sstream>
@@ -50,6 +53,7 @@ StabilityPoint SpeedStability::at(double speed_m_per_s) {
   }
   StabilityPoint p;
   p.speed_m_per_s = speed_m_per_s;
+  p.time_s = options_.time_s;
   EquilibriumOptions eq_opt;
   eq_opt.time_s = options_.time_s;
   // Each stage names itself, the speed and the place in its errors
@@ -73,6 +77,7 @@ StabilityPoint SpeedStability::at(double speed_m_per_s) {
     return describe_modes(model, p.linear, solve_eigen(p.linear.A, options_));
   });
   p.least_stable = least_stable_mode(p.modes, options_.max_frequency_hz);
+  p.least_damped = least_damped_mode(p.modes, options_.max_frequency_hz);
   for (int i = 0; i < int(p.modes.size()); ++i)
     if (!p.modes[i].neutral && p.modes[i].frequency_hz > options_.max_frequency_hz &&
         p.modes[i].eigenvalue.real() > 0.0 && p.modes[i].eigenvalue.imag() >= 0.0)
@@ -95,6 +100,59 @@ StabilityPoint SpeedStability::at(double speed_m_per_s) {
   p.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return p;
 }
+
+namespace {
+
+// Smallest damping ratio in the hunting band minus the limit: negative below it.
+double damping_margin(const StabilityPoint& p, double limit) {
+  return p.least_damped >= 0 ? p.modes[size_t(p.least_damped)].damping_ratio - limit : INFINITY;
+}
+
+// The damping-ratio criterion on the grid of r, then bisection inside the
+// first bracket where the margin changes sign (as for the real part).
+template <class Report>
+void find_damping_limit(const Model& model, const CriticalSpeedOptions& options,
+                        CriticalSpeedResult& r, Report& report) {
+  const double limit = options.min_damping_ratio;
+  r.min_damping_ratio = limit;
+  int below = -1;
+  for (size_t i = 0; i < r.grid.size() && below < 0; ++i)
+    if (damping_margin(r.grid[i], limit) < 0.0) below = int(i);
+  if (below < 0) return;
+  if (below == 0) {
+    r.damping_below_at_start = true;
+    r.at_damping_limit = r.grid.front();
+    return;
+  }
+  StabilityPoint lo = r.grid[size_t(below - 1)], hi = r.grid[size_t(below)];
+  SpeedStability refine(model, lo.equilibrium.state, lo.speed_m_per_s, options.stability);
+  while (hi.speed_m_per_s - lo.speed_m_per_s > options.tolerance_m_per_s) {
+    const double mid = 0.5 * (lo.speed_m_per_s + hi.speed_m_per_s);
+    StabilityPoint p;
+    try {
+      p = refine.at(mid);
+    } catch (const std::runtime_error& e) {
+      std::ostringstream why;
+      why << "the damping-ratio bisection stopped at " << mid << " m/s (no steady state there) "
+          << "with the limit bracketed in [" << lo.speed_m_per_s << ", " << hi.speed_m_per_s
+          << "] m/s: " << e.what();
+      r.partial = true;
+      r.partial_reason += (r.partial_reason.empty() ? "" : "; ") + why.str();
+      break;
+    }
+    report(p);
+    (damping_margin(p, limit) < 0.0 ? hi : lo) = std::move(p);
+  }
+  const double a = damping_margin(lo, limit), b = damping_margin(hi, limit);
+  r.damping_limit_speed_m_per_s =
+      std::isfinite(a) && std::isfinite(b) && b != a
+          ? lo.speed_m_per_s + (hi.speed_m_per_s - lo.speed_m_per_s) * (-a) / (b - a)
+          : hi.speed_m_per_s;
+  r.at_damping_limit = std::move(lo);
+  r.damping_limit_found = true;
+}
+
+}  // namespace
 
 CriticalSpeedResult find_critical_speed(const Model& model, const Eigen::VectorXd& equilibrium_guess,
                                         double guess_speed_m_per_s,
@@ -188,6 +246,11 @@ CriticalSpeedResult find_critical_speed(const Model& model, const Eigen::VectorX
     r.at_critical = std::move(lo);
     r.critical_speed_found = true;
   }
+  if (options.min_damping_ratio > 0.0) find_damping_limit(model, options, r, report);
+  name_tracked_modes(r.grid, track_modes(r.grid));
+  if (r.critical_speed_found || r.unstable_at_start) inherit_mode_names(r.at_critical, r.grid);
+  if (r.damping_limit_found || r.damping_below_at_start)
+    inherit_mode_names(r.at_damping_limit, r.grid);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
 }
@@ -212,6 +275,74 @@ std::vector<std::vector<int>> track_modes(const std::vector<StabilityPoint>& gri
       if (ids[i][j] < 0 && is_tracked(modes[j])) ids[i][j] = next_id++;
   }
   return ids;
+}
+
+}  // namespace railstab
+
+namespace railstab {
+
+void name_tracked_modes(std::vector<StabilityPoint>& grid, const std::vector<std::vector<int>>& ids) {
+  // Votes per track: shape name -> count; the smallest damping ratio along
+  // the track orders the suffixes (the least damped keeps the plain name).
+  std::map<int, std::map<std::string, int>> votes;
+  std::map<int, double> min_damping;
+  for (size_t i = 0; i < grid.size(); ++i)
+    for (size_t j = 0; j < grid[i].modes.size(); ++j) {
+      const int id = ids[i][j];
+      if (id < 0) continue;
+      ++votes[id][grid[i].modes[j].shape_name];
+      const auto [it, fresh] = min_damping.emplace(id, grid[i].modes[j].damping_ratio);
+      if (!fresh) it->second = std::min(it->second, grid[i].modes[j].damping_ratio);
+    }
+  std::vector<int> tracks;
+  std::vector<std::string> names;
+  std::vector<double> damping;
+  for (const auto& [id, v] : votes) {
+    // Most votes; among equal votes the name seen first in the map order
+    // (alphabetical), so a run always picks the same one.
+    const auto best = std::max_element(v.begin(), v.end(), [](const auto& a, const auto& b) {
+      return a.second < b.second;
+    });
+    tracks.push_back(id);
+    names.push_back(best->first);
+    damping.push_back(min_damping[id]);
+  }
+  make_names_unique(names, {}, damping);
+  std::map<int, std::string> track_name;
+  for (size_t k = 0; k < tracks.size(); ++k) track_name[tracks[k]] = names[k];
+  for (size_t i = 0; i < grid.size(); ++i) {
+    auto& modes = grid[i].modes;
+    const std::vector<int> partner = conjugate_partners(modes);
+    std::vector<std::string> own;
+    std::vector<int> copies(modes.size(), -1);
+    std::vector<double> damping_ratio;
+    for (size_t j = 0; j < modes.size(); ++j) {
+      own.push_back(modes[j].shape_name);
+      damping_ratio.push_back(modes[j].damping_ratio);
+      if (ids[i][j] >= 0 || partner[j] >= 0) copies[j] = int(j);  // not counted here
+    }
+    make_names_unique(own, copies, damping_ratio);
+    for (size_t j = 0; j < modes.size(); ++j)
+      if (ids[i][j] >= 0) modes[j].name = track_name[ids[i][j]];
+      else if (partner[j] < 0) modes[j].name = own[j];
+    for (size_t j = 0; j < modes.size(); ++j)
+      if (partner[j] >= 0) modes[j].name = modes[size_t(partner[j])].name;
+  }
+}
+
+void inherit_mode_names(StabilityPoint& point, const std::vector<StabilityPoint>& grid) {
+  if (grid.empty()) return;
+  size_t nearest = 0;
+  for (size_t i = 1; i < grid.size(); ++i)
+    if (std::abs(grid[i].speed_m_per_s - point.speed_m_per_s) <
+        std::abs(grid[nearest].speed_m_per_s - point.speed_m_per_s))
+      nearest = i;
+  std::vector<EigenPair> prev, cur;
+  for (const ModeReport& m : grid[nearest].modes) prev.push_back({m.eigenvalue, m.vector, 0.0});
+  for (const ModeReport& m : point.modes) cur.push_back({m.eigenvalue, m.vector, 0.0});
+  const std::vector<int> match = match_modes(prev, cur);
+  for (size_t j = 0; j < match.size(); ++j)
+    if (match[j] >= 0) point.modes[size_t(match[j])].name = grid[nearest].modes[j].name;
 }
 
 }  // namespace railstab

@@ -43,7 +43,10 @@ struct StabilityPoint {
   LinearModel linear;
   std::vector<ModeReport> modes;  // dense: all; arpack: the ones found
   EigenSolverKind solver_used = EigenSolverKind::dense;
-  int least_stable = -1;          // index into modes, -1 if none
+  double time_s = 0.0;            // where on the track (StabilityOptions::time_s)
+  int least_stable = -1;          // index into modes, -1 if none: largest real part (decides stability)
+  int least_damped = -1;          // index into modes, -1 if none: smallest damping ratio of
+                                  // the lateral-plane modes (tables, damping criterion)
   double max_real_part = 0.0;     // of the non-neutral modes (1/s)
   // Non-empty when a wheelset's steady lateral shift exceeds its flange
   // clearance: the flangeless contact model is outside its validity there.
@@ -80,6 +83,14 @@ struct CriticalSpeedResult {
   double critical_speed_m_per_s = 0.0;
   double speed_tolerance_m_per_s = 0.0;
   StabilityPoint at_critical;        // the stable side of the final bracket
+  // Damping-ratio criterion (CriticalSpeedOptions::min_damping_ratio): the
+  // lowest speed where the least damped mode's ratio falls below the limit,
+  // bisected like the critical speed on (smallest ratio - limit).
+  double min_damping_ratio = 0.0;    // the limit; 0: criterion not asked
+  bool damping_limit_found = false;
+  bool damping_below_at_start = false;
+  double damping_limit_speed_m_per_s = 0.0;
+  StabilityPoint at_damping_limit;   // the side above the limit of the final bracket
   std::vector<StabilityPoint> grid;  // the whole speed grid (for root locus and plots)
   int evaluations = 0;
   double seconds = 0.0;
@@ -99,6 +110,10 @@ struct CriticalSpeedOptions {
   double from_m_per_s = 5.0, to_m_per_s = 100.0, grid_step_m_per_s = 5.0;
   double tolerance_m_per_s = 0.01;
   StabilityOptions stability;
+  // > 0: also find the lowest speed where a lateral-plane mode in the
+  // hunting band (least_damped_mode) has a damping ratio below this (e.g.
+  // 0.05); 0: off.
+  double min_damping_ratio = 0.0;
   std::function<void(const std::string&)> progress;
 };
 
@@ -106,6 +121,18 @@ struct CriticalSpeedOptions {
 // by sort order: track_id[i][j] is the track of grid[i].modes[j] (-1 for
 // non-oscillatory or neutral modes and for Im < 0 partners).
 std::vector<std::vector<int>> track_modes(const std::vector<StabilityPoint>& grid);
+
+// One name per tracked mode over the whole grid (the shape name it has at
+// most speeds, made unique across tracks with suffixes in ascending smallest
+// damping ratio along the track), written into every grid point's modes; untracked modes (real,
+// neutral) keep their shape names, unique within their speed. `ids` from
+// track_modes(grid).
+void name_tracked_modes(std::vector<StabilityPoint>& grid, const std::vector<std::vector<int>>& ids);
+
+// Names of a point off the grid (a bisection point) from the grid point
+// nearest in speed, by eigenvector continuity (match_modes); modes that match
+// none keep their own names.
+void inherit_mode_names(StabilityPoint& point, const std::vector<StabilityPoint>& grid);
 
 CriticalSpeedResult find_critical_speed(const Model& model, const Eigen::VectorXd& equilibrium_guess,
                                         double guess_speed_m_per_s,

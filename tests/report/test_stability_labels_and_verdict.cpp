@@ -1,0 +1,170 @@
+// What a client reads (issue 12): the JSON and the Markdown state the same
+// verdict (the JSON used to say stable_in_range false where the Markdown said
+// "stable over the whole range"); every plotted mode is labelled with its
+// name in the legend of every plot, with one colour per mode across the
+// plots, the critical mode marked, as PNG and SVG; the critical-speed JSON
+// carries the mode shape with energy shares.
+#include <gtest/gtest.h>
+
+#include "io/format_checks.hpp"
+#include "io/gnuplot.hpp"
+#include "io/output_set.hpp"
+#include "report/stability_report.hpp"
+#include "setup/prepare_scene.hpp"
+#include "stability/speed_analysis.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <set>
+#include <unistd.h>
+
+using namespace railstab;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string read(const fs::path& p) {
+  std::ifstream in(p);
+  return std::string((std::istreambuf_iterator<char>(in)), {});
+}
+
+struct Written {
+  std::string json, markdown, script, tracks, svg_damping;
+};
+
+Written write_all(const Model& model, const CriticalSpeedResult& r, const std::string& tag,
+                  bool plots) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("railstab_labels_" + tag + "_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  {
+    OutputSet outputs(dir);
+    write_stability_results(model, r, outputs, "run", "dense", plots);
+    outputs.commit();
+  }
+  Written w{read(dir / "run_critical_speed.json"), read(dir / "run_critical_speed.md"), "", "", ""};
+  if (plots) {
+    w.script = read(dir / "run_stability_plots.gp");
+    w.tracks = read(dir / "run_tracks.dat");
+    w.svg_damping = read(dir / "run_damping_vs_speed.svg");
+    for (const char* f : {"run_root_locus.svg", "run_frequency_vs_speed.svg", "run_root_locus.png"})
+      EXPECT_GT(fs::file_size(dir / f), 0u) << f;
+  }
+  fs::remove_all(dir);
+  return w;
+}
+
+bool json_has(const std::string& json, const std::string& key, const std::string& literal) {
+  return std::regex_search(json, std::regex("\"" + key + "\": *" + literal));
+}
+
+// The JSON's verdict_text, found in the Markdown; the boolean flags agree with
+// the verdict.
+void expect_agreement(const Written& w, const CriticalSpeedResult& r) {
+  std::vector<std::string> strings;
+  ASSERT_TRUE(test::is_valid_json(w.json, &strings));
+  const std::string sentence = verdict_sentence(r);
+  EXPECT_NE(std::find(strings.begin(), strings.end(), sentence), strings.end()) << sentence;
+  EXPECT_NE(w.markdown.find(sentence), std::string::npos) << sentence;
+  const StabilityVerdict v = stability_verdict(r);
+  EXPECT_TRUE(json_has(w.json, "verdict", "\"" + verdict_key(v) + "\""));
+  EXPECT_TRUE(json_has(w.json, "stable_in_range",
+                       v == StabilityVerdict::stable_in_range ? "true" : "false"));
+  const bool says_whole_range = w.markdown.find("stable over the whole range") != std::string::npos;
+  EXPECT_EQ(says_whole_range, v == StabilityVerdict::stable_in_range);
+}
+
+}  // namespace
+
+TEST(StabilityVerdict, JsonAndMarkdownAgreeInEveryOutcome) {
+  const PreparedScene s =
+      prepare_scene(std::string(RAILSTAB_CASES_DIR) + "/textbook_wheelset.toml", {});
+  SpeedStability stability(s.model, s.equilibrium.state, s.speed_m_per_s);
+  const StabilityPoint p = stability.at(10.0);
+  // Stable over the whole (one-point) range.
+  CriticalSpeedResult stable;
+  stable.grid = {p};
+  stable.from_m_per_s = stable.to_m_per_s = 10.0;
+  expect_agreement(write_all(s.model, stable, "stable", false), stable);
+  // No crossing, but the steady state lost below the top: not "stable over
+  // the whole range" (the contradiction of issue 12).
+  CriticalSpeedResult lost = stable;
+  lost.to_m_per_s = 50.0;
+  lost.stable_in_range = false;
+  lost.equilibrium_lost_at_m_per_s = 12.5;
+  lost.equilibrium_error = "no steady state";
+  lost.partial = true;
+  lost.partial_reason = "the speed grid stopped";
+  expect_agreement(write_all(s.model, lost, "lost", false), lost);
+  EXPECT_EQ(stability_verdict(lost), StabilityVerdict::stable_below_equilibrium_loss);
+  // A critical speed.
+  CriticalSpeedOptions opt;
+  opt.from_m_per_s = 5.0;
+  opt.to_m_per_s = 80.0;
+  opt.grid_step_m_per_s = 5.0;
+  const CriticalSpeedResult crit =
+      find_critical_speed(s.model, s.equilibrium.state, s.speed_m_per_s, opt);
+  ASSERT_TRUE(crit.critical_speed_found);
+  const Written w = write_all(s.model, crit, "crit", false);
+  expect_agreement(w, crit);
+  // The critical mode's shape with both energy shares in the JSON and the Markdown.
+  EXPECT_TRUE(json_has(w.json, "normalised_to", "\"wheelset[^\"]* lateral\""));
+  EXPECT_TRUE(json_has(w.json, "potential_energy_share", "[-0-9]"));
+  EXPECT_TRUE(json_has(w.json, "modes_at_critical_speed", "\\[\\s*\\{"));
+  EXPECT_NE(w.markdown.find("| body | coordinate | amplitude | phase [deg] | kinetic share | "
+                            "potential share |"),
+            std::string::npos);
+}
+
+TEST(StabilityPlots, EveryCurveNamedOneColourPerModeCriticalMarkedPngAndSvg) {
+  if (find_gnuplot().empty()) GTEST_SKIP() << "gnuplot not installed";
+  const PreparedScene s =
+      prepare_scene(std::string(RAILSTAB_CASES_DIR) + "/thesis_bogie_tangent.toml", {});
+  CriticalSpeedOptions opt;
+  opt.from_m_per_s = 20.0;
+  opt.to_m_per_s = 50.0;
+  opt.grid_step_m_per_s = 5.0;
+  const CriticalSpeedResult r = find_critical_speed(s.model, s.equilibrium.state, s.speed_m_per_s, opt);
+  ASSERT_TRUE(r.critical_speed_found);
+  const Written w = write_all(s.model, r, "plots", true);
+  // Track blocks name their mode; every plot clause has a title (no "notitle"
+  // curve except the empty-plot placeholder) and the colour of block k is the
+  // same in the three plots.
+  const std::regex block("# track [0-9]+: '([^']*)'");
+  std::vector<std::string> names;
+  for (auto it = std::sregex_iterator(w.tracks.begin(), w.tracks.end(), block);
+       it != std::sregex_iterator(); ++it)
+    names.push_back((*it)[1]);
+  ASSERT_GE(names.size(), 3u);
+  const std::regex clause("index ([0-9]+) using [^\\n]* lc rgb '(#[0-9a-f]{6})'[^\\n]* title '([^']*)'");
+  std::map<int, std::set<std::string>> colours;
+  std::map<int, int> clauses;
+  int critical_tags = 0;
+  for (auto it = std::sregex_iterator(w.script.begin(), w.script.end(), clause);
+       it != std::sregex_iterator(); ++it) {
+    const int k = std::stoi((*it)[1]);
+    ASSERT_LT(size_t(k), names.size());
+    colours[k].insert((*it)[2]);
+    ++clauses[k];
+    const std::string title = (*it)[3];
+    EXPECT_EQ(title.rfind(names[size_t(k)], 0), 0u) << title;
+    if (title.find("[critical mode]") != std::string::npos) ++critical_tags;
+  }
+  EXPECT_EQ(clauses.size(), names.size());
+  for (const auto& [k, c] : colours) {
+    EXPECT_EQ(c.size(), 1u) << "mode " << names[size_t(k)] << " changes colour";
+    EXPECT_EQ(clauses[k], 3) << names[size_t(k)];
+  }
+  EXPECT_EQ(critical_tags, 3);  // the hunting mode, tagged in each plot
+  EXPECT_EQ(w.script.find("notitle"), std::string::npos);
+  // Units on every axis, the critical speed marked, the scene in the title.
+  for (const char* label : {"set xlabel 'real part of the eigenvalue [1/s]'",
+                            "set ylabel 'frequency [Hz]'", "set xlabel 'speed [m/s]'",
+                            "set ylabel 'damping ratio [-]'", "V_crit = "})
+    EXPECT_NE(w.script.find(label), std::string::npos) << label;
+  EXPECT_NE(w.script.find("set title '" + s.model.name + ": "), std::string::npos);
+  // The legend is drawn: every name is in the SVG's text.
+  for (const std::string& n : names) EXPECT_NE(w.svg_damping.find(n), std::string::npos) << n;
+}
