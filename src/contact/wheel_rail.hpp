@@ -334,10 +334,7 @@ inline double centred_wheel_gap_m(const ModelContact& contact, double z_m) {
     return z_m - contact.spec.nominal_rolling_radius_m;
   const ProfileContactGeometry& pg = *contact.spec.profile_geometry;
   const WheelPoseOf<double> pose = wheel_pose_in_rail_frame<double>(pg.pair, +1, 0.0, z_m, 0.0);
-  double lowest = 1e300;
-  for (int k = 0; k < pg.table.slots(); ++k)
-    lowest = std::min(lowest, pg.table.vertical_gap<double>(k, pose));
-  return lowest;
+  return pg.table.lowest_vertical_gap(pose);
 }
 
 // Contact point `slot` of the wheel on `side`: geometry, then forces. Out of

@@ -42,6 +42,7 @@
 #include "contact_geometry/wheel_contact_points.hpp"
 #include "contact_geometry/wheelset_pose.hpp"
 
+#include <algorithm>
 #include <array>
 #include <stdexcept>
 #include <string>
@@ -103,6 +104,12 @@ class ContactTable {
   template <class T> TableContact<T> evaluate(int slot, const WheelPoseOf<T>& pose) const;
   // The vertical gap alone (g0 + vertical), the cheap test for contact.
   template <class T> T vertical_gap(int slot, const WheelPoseOf<T>& pose) const;
+  // The lowest vertical gap over all slots (< 0: the wheel overlaps its rail).
+  double lowest_vertical_gap(const WheelPoseOf<double>& pose) const {
+    double lowest = vertical_gap<double>(0, pose);
+    for (int k = 1; k < slots(); ++k) lowest = std::min(lowest, vertical_gap<double>(k, pose));
+    return lowest;
+  }
 
   // The raw node value (for tests and plots).
   double node(int slot, TableQuantity q, int i, int j) const {

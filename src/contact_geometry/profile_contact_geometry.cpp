@@ -37,14 +37,12 @@ std::shared_ptr<const ProfileContactGeometry> build_profile_contact_geometry(
   g->pair = make_profile_pair(std::move(wheel), std::move(rail), placement);
   g->table = make_contact_table(g->pair, source.table);
   g->flange_angle_rad = flange_face_angle(g->pair);
-  // The centred wheelset must touch: some slot's lowest gap within the
-  // table's vertical reach of the others (a pair that never meets, e.g. a
-  // wheel placed outside its rail, has all gaps far from each other's).
+  // The centred wheelset, lowered onto its rail by the table's lowest gap,
+  // must touch at a true contact point (a local minimum of the gap): a pair
+  // that never meets, e.g. a wheel placed beside its rail, has none.
   const WheelPoseOf<double> centred =
       wheel_pose_in_rail_frame<double>(g->pair, +1, 0.0, 0.0, 0.0);
-  double lowest = 1e300;
-  for (int k = 0; k < g->table.slots(); ++k)
-    lowest = std::min(lowest, g->table.evaluate<double>(k, centred).vertical_gap_m);
+  const double lowest = g->table.lowest_vertical_gap(centred);
   const std::vector<ContactPoint> direct = find_contact_points(
       g->pair, WheelPose{centred.lateral_m, centred.vertical_m - lowest, centred.roll_rad});
   if (direct.empty()) {

@@ -682,7 +682,7 @@ ProfileSourceSpec read_profile_source(const TableReader& contact) {
   p.tape_circle_from_flange_back_m =
       contact.number_or("tape_circle_from_flange_back_m", "m", p.tape_circle_from_flange_back_m);
   ContactTableOptions& t = s.table;
-  auto positive = [&](std::string_view key, std::string_view unit, double fallback, double lo,
+  auto in_range = [&](std::string_view key, std::string_view unit, double fallback, double lo,
                       double hi) {
     const double v = contact.number_or(key, unit, fallback);
     if (!(v >= lo && v <= hi))
@@ -691,10 +691,10 @@ ProfileSourceSpec read_profile_source(const TableReader& contact) {
                    format_number(v));
     return v;
   };
-  t.lateral_half_range_m = positive("table_lateral_half_range_m", "m", t.lateral_half_range_m, 0.002, 0.03);
-  t.lateral_step_m = positive("table_lateral_step_m", "m", t.lateral_step_m, 2e-5, 1e-3);
-  t.roll_half_range_rad = positive("table_roll_half_range_rad", "rad", t.roll_half_range_rad, 0.002, 0.1);
-  t.roll_step_rad = positive("table_roll_step_rad", "rad", t.roll_step_rad, 1e-4, 0.02);
+  t.lateral_half_range_m = in_range("table_lateral_half_range_m", "m", t.lateral_half_range_m, 0.002, 0.03);
+  t.lateral_step_m = in_range("table_lateral_step_m", "m", t.lateral_step_m, 2e-5, 1e-3);
+  t.roll_half_range_rad = in_range("table_roll_half_range_rad", "rad", t.roll_half_range_rad, 0.002, 0.1);
+  t.roll_step_rad = in_range("table_roll_step_rad", "rad", t.roll_step_rad, 1e-4, 0.02);
   return s;
 }
 
@@ -777,21 +777,18 @@ std::vector<ContactSpec> read_contacts(const TableReader& top) {
     if (!node.is_table())
       fail_expectation(top.source(), path, "a table [" + path + "] describing a contact model",
                        describe_found(node));
-    const TableReader contact(
-        *node.as_table(), path, top.source(),
-        {"geometry", "cone_angle_rad", "conicity", "half_contact_distance_m",
-         "nominal_rolling_radius_m", "normal", "prescribed_wheel_load_N",
-         "rail_head_transverse_radius_m", "wheel_young_modulus_Pa", "wheel_poisson_ratio",
-         "rail_young_modulus_Pa", "rail_poisson_ratio", "tangential", "spin_creepage", "f11_N",
-         "f22_N", "f23_N_m", "f33_N_m2", "flange_clearance_m",
-         "normal_damping_N_s_per_m", "creep_law", "friction_coefficient",
-         "kalker_reduction_factor", "polach_limit_friction_ratio",
-         "polach_friction_decrease_s_per_m", "polach_adhesion_reduction_factor",
-         "polach_slip_reduction_factor", "wheel_profile", "wheel_profile_mm", "wheel_profile_m",
-         "rail_profile", "rail_profile_mm", "rail_profile_m", "track_gauge_m",
-         "gauge_measuring_height_m", "flange_back_distance_m", "rail_inclination_rad",
-         "tape_circle_from_flange_back_m", "table_lateral_half_range_m", "table_lateral_step_m",
-         "table_roll_half_range_rad", "table_roll_step_rad"});
+    std::vector<std::string_view> keys = {
+        "geometry", "cone_angle_rad", "conicity", "half_contact_distance_m",
+        "nominal_rolling_radius_m", "normal", "prescribed_wheel_load_N",
+        "rail_head_transverse_radius_m", "wheel_young_modulus_Pa", "wheel_poisson_ratio",
+        "rail_young_modulus_Pa", "rail_poisson_ratio", "tangential", "spin_creepage", "f11_N",
+        "f22_N", "f23_N_m", "f33_N_m2", "flange_clearance_m",
+        "normal_damping_N_s_per_m", "creep_law", "friction_coefficient",
+        "kalker_reduction_factor", "polach_limit_friction_ratio",
+        "polach_friction_decrease_s_per_m", "polach_adhesion_reduction_factor",
+        "polach_slip_reduction_factor"};
+    keys.insert(keys.end(), kProfileKeys.begin(), kProfileKeys.end());
+    const TableReader contact(*node.as_table(), path, top.source(), std::move(keys));
     contacts.push_back(read_contact(contact, std::string(name.str())));
   }
   return contacts;

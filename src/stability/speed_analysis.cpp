@@ -108,6 +108,50 @@ double damping_margin(const StabilityPoint& p, double limit) {
   return p.least_damped >= 0 ? p.modes[size_t(p.least_damped)].damping_ratio - limit : INFINITY;
 }
 
+// Bisection of [lo, hi] on the sign of margin(p) (negative at hi) down to
+// the speed tolerance, each point reported. A midpoint without a steady state
+// ends it with the bracket found so far (the change of sign lies between two
+// speeds that both have one, only less tightly bracketed), marked partial in
+// r. Returns the final bracket and the speed where the margin, interpolated
+// linearly inside it, vanishes (hi if the margins do not allow it).
+struct SpeedBracket {
+  StabilityPoint lo, hi;
+  double zero_m_per_s = 0.0;
+};
+template <class Margin, class Report>
+SpeedBracket bisect_speed(const Model& model, const CriticalSpeedOptions& options,
+                          StabilityPoint lo, StabilityPoint hi, const char* what, Margin&& margin,
+                          CriticalSpeedResult& r, Report& report) {
+  SpeedStability refine(model, lo.equilibrium.state, lo.speed_m_per_s, options.stability);
+  while (hi.speed_m_per_s - lo.speed_m_per_s > options.tolerance_m_per_s) {
+    const double mid = 0.5 * (lo.speed_m_per_s + hi.speed_m_per_s);
+    StabilityPoint p;
+    try {
+      p = refine.at(mid);
+    } catch (const std::runtime_error& e) {
+      std::ostringstream why;
+      why << "the " << what << " bisection stopped at " << mid
+          << " m/s (no steady state there) with the change bracketed in [" << lo.speed_m_per_s
+          << ", " << hi.speed_m_per_s << "] m/s instead of " << options.tolerance_m_per_s
+          << " m/s: " << e.what();
+      r.partial = true;
+      r.partial_reason += (r.partial_reason.empty() ? "" : "; ") + why.str();
+      if (options.progress) options.progress("  bisection stopped: " + why.str());
+      break;
+    }
+    report(p);
+    (margin(p) < 0.0 ? hi : lo) = std::move(p);
+  }
+  const double a = margin(lo), b = margin(hi);
+  SpeedBracket out;
+  out.zero_m_per_s = std::isfinite(a) && std::isfinite(b) && b != a
+                         ? lo.speed_m_per_s + (hi.speed_m_per_s - lo.speed_m_per_s) * (-a) / (b - a)
+                         : hi.speed_m_per_s;
+  out.lo = std::move(lo);
+  out.hi = std::move(hi);
+  return out;
+}
+
 // The damping-ratio criterion on the grid of r, then bisection inside the
 // first bracket where the margin changes sign (as for the real part).
 template <class Report>
@@ -124,31 +168,11 @@ void find_damping_limit(const Model& model, const CriticalSpeedOptions& options,
     r.at_damping_limit = r.grid.front();
     return;
   }
-  StabilityPoint lo = r.grid[size_t(below - 1)], hi = r.grid[size_t(below)];
-  SpeedStability refine(model, lo.equilibrium.state, lo.speed_m_per_s, options.stability);
-  while (hi.speed_m_per_s - lo.speed_m_per_s > options.tolerance_m_per_s) {
-    const double mid = 0.5 * (lo.speed_m_per_s + hi.speed_m_per_s);
-    StabilityPoint p;
-    try {
-      p = refine.at(mid);
-    } catch (const std::runtime_error& e) {
-      std::ostringstream why;
-      why << "the damping-ratio bisection stopped at " << mid << " m/s (no steady state there) "
-          << "with the limit bracketed in [" << lo.speed_m_per_s << ", " << hi.speed_m_per_s
-          << "] m/s: " << e.what();
-      r.partial = true;
-      r.partial_reason += (r.partial_reason.empty() ? "" : "; ") + why.str();
-      break;
-    }
-    report(p);
-    (damping_margin(p, limit) < 0.0 ? hi : lo) = std::move(p);
-  }
-  const double a = damping_margin(lo, limit), b = damping_margin(hi, limit);
-  r.damping_limit_speed_m_per_s =
-      std::isfinite(a) && std::isfinite(b) && b != a
-          ? lo.speed_m_per_s + (hi.speed_m_per_s - lo.speed_m_per_s) * (-a) / (b - a)
-          : hi.speed_m_per_s;
-  r.at_damping_limit = std::move(lo);
+  SpeedBracket b = bisect_speed(
+      model, options, r.grid[size_t(below - 1)], r.grid[size_t(below)], "damping-ratio",
+      [limit](const StabilityPoint& p) { return damping_margin(p, limit); }, r, report);
+  r.damping_limit_speed_m_per_s = b.zero_m_per_s;
+  r.at_damping_limit = std::move(b.lo);
   r.damping_limit_found = true;
 }
 
@@ -215,35 +239,14 @@ CriticalSpeedResult find_critical_speed(const Model& model, const Eigen::VectorX
     r.stable_in_range = false;
     // Bisection on the largest real part: robust when the least stable mode
     // changes inside the bracket; 0.01 m/s from a 5 m/s bracket is 9 steps.
-    StabilityPoint lo = r.grid[crossing - 1], hi = r.grid[crossing];
-    SpeedStability refine(model, lo.equilibrium.state, lo.speed_m_per_s, options.stability);
-    while (hi.speed_m_per_s - lo.speed_m_per_s > options.tolerance_m_per_s) {
-      const double mid = 0.5 * (lo.speed_m_per_s + hi.speed_m_per_s);
-      StabilityPoint p;
-      try {
-        p = refine.at(mid);
-      } catch (const std::runtime_error& e) {
-        // Keep the bracket found so far: the crossing lies between two
-        // speeds that both have a steady state, only less tightly bracketed.
-        std::ostringstream why;
-        why << "the bisection stopped at " << mid << " m/s (no steady state there) with the "
-            << "crossing bracketed in [" << lo.speed_m_per_s << ", " << hi.speed_m_per_s
-            << "] m/s instead of " << options.tolerance_m_per_s << " m/s: " << e.what();
-        r.partial = true;
-        r.partial_reason += (r.partial_reason.empty() ? "" : "; ") + why.str();
-        if (options.progress) options.progress("  bisection stopped: " + why.str());
-        break;
-      }
-      report(p);
-      (p.max_real_part > 0.0 ? hi : lo) = std::move(p);
-    }
-    r.speed_tolerance_m_per_s = std::max(options.tolerance_m_per_s,
-                                         hi.speed_m_per_s - lo.speed_m_per_s);
-    // Interpolate the crossing linearly inside the final bracket.
-    const double a = lo.max_real_part, b = hi.max_real_part;
-    r.critical_speed_m_per_s =
-        lo.speed_m_per_s + (hi.speed_m_per_s - lo.speed_m_per_s) * (-a) / (b - a);
-    r.at_critical = std::move(lo);
+    // The margin is minus the largest real part (negative: unstable).
+    SpeedBracket b = bisect_speed(
+        model, options, r.grid[crossing - 1], r.grid[crossing], "critical-speed",
+        [](const StabilityPoint& p) { return -p.max_real_part; }, r, report);
+    r.speed_tolerance_m_per_s =
+        std::max(options.tolerance_m_per_s, b.hi.speed_m_per_s - b.lo.speed_m_per_s);
+    r.critical_speed_m_per_s = b.zero_m_per_s;
+    r.at_critical = std::move(b.lo);
     r.critical_speed_found = true;
   }
   if (options.min_damping_ratio > 0.0) find_damping_limit(model, options, r, report);

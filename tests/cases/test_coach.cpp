@@ -89,8 +89,9 @@ TEST(Coach, NominalIsTheStaticEquilibrium) {
     EXPECT_NEAR(q6(1, b), model.bodies[b].nominal_q(1), 1e-9);           // lateral, m
     EXPECT_NEAR(q6(3, b), model.bodies[b].nominal_q(3), 1e-9);           // roll, rad
     EXPECT_NEAR(q6(5, b), model.bodies[b].nominal_q(5), 1e-9);           // yaw, rad
-    if (!model.bodies[b].wheelset())
+    if (!model.bodies[b].wheelset()) {
       EXPECT_NEAR(q6(4, b), model.bodies[b].nominal_q(4), 1e-5);  // pitch, rad
+    }
   }
   EXPECT_NEAR(mass_kg, 32000.0 + 2 * 2615.0 + 4 * 1813.0, 1e-9);
 

@@ -23,6 +23,11 @@ namespace {
 
 const std::string kScene = std::string(RAILSTAB_CASES_DIR) + "/thesis_vehicle_s1002_tangent.toml";
 
+std::string scene_text() {
+  std::ifstream in(kScene);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
 const Model& vehicle() {
   static const Model model = build_model(load_scene_file(kScene));
   return model;
@@ -87,11 +92,9 @@ TEST(ProfileContact, AdJacobianMatchesCentralDifferencesFromTreadToFlange) {
     // 0.1 mm of overlap at the lowest point of the shifted wheelset.
     const ProfileContactGeometry& g = *contact.spec.profile_geometry;
     double lowest = 1e300;
-    for (int side : {1, -1}) {
-      const auto pose = wheel_pose_in_rail_frame<double>(g.pair, side, shift, x(z), 0.0);
-      for (int k = 0; k < g.table.slots(); ++k)
-        lowest = std::min(lowest, g.table.vertical_gap<double>(k, pose));
-    }
+    for (int side : {1, -1})
+      lowest = std::min(lowest, g.table.lowest_vertical_gap(
+                                    wheel_pose_in_rail_frame<double>(g.pair, side, shift, x(z), 0.0)));
     x(z) -= lowest + 1e-4;
     EvaluationDetails details;
     rhs(model, V, 0.0, x, &details);
@@ -116,8 +119,7 @@ TEST(ProfileContact, AdJacobianMatchesCentralDifferencesFromTreadToFlange) {
 }
 
 TEST(ProfileContact, MissingProfileFileIsNamedWithItsKey) {
-  std::ifstream in(kScene);
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string text = scene_text();
   const std::string from = "profiles/MBench_S1002_v3.prw";
   text.replace(text.find(from), from.size(), "profiles/no_such_wheel.prw");
   try {
@@ -129,8 +131,7 @@ TEST(ProfileContact, MissingProfileFileIsNamedWithItsKey) {
     EXPECT_NE(m.find("no_such_wheel.prw"), std::string::npos) << m;
   }
   // A key of the flangeless models does not belong with profiles.
-  std::ifstream in2(kScene);
-  std::string text2((std::istreambuf_iterator<char>(in2)), std::istreambuf_iterator<char>());
+  std::string text2 = scene_text();
   text2.replace(text2.find("geometry = \"profiles\""), 21,
                 "geometry = \"profiles\"\ncone_angle_rad = 0.05");
   try {

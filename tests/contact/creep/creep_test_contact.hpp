@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <string>
 
 namespace railstab::creep_test {
 
@@ -104,6 +105,16 @@ inline Eigen::Matrix3d kalker_jacobian(const CreepInput<double>& in, double r) {
       0.0, -in.f22_N, -in.f23_N_m,  //
       0.0, in.f23_N_m, -in.f33_N_m2;
   return r * K;
+}
+
+// The message of what f() throws, or "no throw".
+template <class F> std::string error_message(F&& f) {
+  try {
+    f();
+  } catch (const std::exception& e) {
+    return std::string(e.what());
+  }
+  return std::string("no throw");
 }
 
 }  // namespace railstab::creep_test

@@ -170,14 +170,7 @@ TEST(ShenHedrickElkinsCreep, ZeroNormalForceGivesZeroForces) {
 }
 
 TEST(ShenHedrickElkinsCreep, BadInputNamesTheField) {
-  const auto message = [](auto&& f) {
-    try {
-      f();
-    } catch (const std::exception& e) {
-      return std::string(e.what());
-    }
-    return std::string("no throw");
-  };
+  const auto message = [](auto&& f) { return error_message(f); };
   EXPECT_NE(message([] { ShenHedrickElkinsCreep<double>{-0.1, 1.0}.forces(contact(0, 0, 0)); })
                 .find("friction_coefficient"),
             std::string::npos);
