@@ -117,6 +117,8 @@ EquilibriumResult solve_equilibrium(const Model& model, double speed_m_per_s,
       throw fail(msg.str());
     }
   };
+  // d(equations)/d(unknowns) only: the columns Newton solves for, coloured.
+  const RhsJacobianPlan jacobian_plan = plan_rhs_jacobian(model, rows, unknowns);
   Eigen::VectorXd r = at_iterate("residual", [&] { return residual(model, V, t, x); });
   for (int it = 0; it <= options.max_iterations; ++it) {
     Eigen::Index worst = 0;
@@ -128,11 +130,8 @@ EquilibriumResult solve_equilibrium(const Model& model, double speed_m_per_s,
       return result;
     }
     if (it == options.max_iterations) break;
-    const Eigen::MatrixXd jac =
-        at_iterate("Jacobian", [&] { return rhs_jacobian_ad(model, V, t, x); });
-    Eigen::MatrixXd J(m, m);
-    for (int i = 0; i < m; ++i)
-      for (int j = 0; j < m; ++j) J(i, j) = jac(rows[i], unknowns[j]);
+    const Eigen::MatrixXd J =
+        at_iterate("Jacobian", [&] { return rhs_jacobian_ad(model, jacobian_plan, V, t, x); });
     // Minimum-norm step: a neutral direction (e.g. an unrestrained
     // longitudinal drift) does not stop the solve.
     const Eigen::VectorXd step = J.completeOrthogonalDecomposition().solve(-r);
