@@ -40,6 +40,12 @@ std::vector<int> equation_rows(const Model& model, const std::vector<int>& only_
 
 }  // namespace
 
+RhsJacobianPlan equilibrium_jacobian_plan(const Model& model,
+                                          const std::vector<int>& only_positions) {
+  return plan_rhs_jacobian(model, equation_rows(model, only_positions),
+                           only_positions.empty() ? equilibrium_unknowns(model) : only_positions);
+}
+
 Eigen::VectorXd nominal_state(const Model& model, double speed_m_per_s) {
   Eigen::VectorXd x = Eigen::VectorXd::Zero(model.state_size());
   const int n = model.n_coordinates;
@@ -118,7 +124,13 @@ EquilibriumResult solve_equilibrium(const Model& model, double speed_m_per_s,
     }
   };
   // d(equations)/d(unknowns) only: the columns Newton solves for, coloured.
-  const RhsJacobianPlan jacobian_plan = plan_rhs_jacobian(model, rows, unknowns);
+  const RhsJacobianPlan own_plan =
+      options.jacobian_plan ? RhsJacobianPlan{} : plan_rhs_jacobian(model, rows, unknowns);
+  const RhsJacobianPlan& jacobian_plan = options.jacobian_plan ? *options.jacobian_plan : own_plan;
+  if (jacobian_plan.rows != rows || jacobian_plan.columns != unknowns)
+    throw std::invalid_argument(
+        "equilibrium solver: options.jacobian_plan is not the plan of this model's equilibrium "
+        "equations and unknowns (use equilibrium_jacobian_plan)");
   Eigen::VectorXd r = at_iterate("residual", [&] { return residual(model, V, t, x); });
   for (int it = 0; it <= options.max_iterations; ++it) {
     Eigen::Index worst = 0;

@@ -11,6 +11,7 @@
 #include "linear/jacobian.hpp"
 #include "linear/jacobian_pattern.hpp"
 #include "equilibrium/equilibrium.hpp"
+#include "linear/linearization.hpp"
 #include "model/scene_builders.hpp"
 #include "setup/prepare_scene.hpp"
 
@@ -308,4 +309,32 @@ TEST(JacobianPattern, BadRowsAndColumnsAreRefused) {
   EXPECT_THROW(plan_rhs_jacobian(model, {0}, {1, 1}), std::invalid_argument);
   EXPECT_THROW(rhs_jacobian_ad(model, 20.0, 0.0, Eigen::VectorXd::Zero(n + 1)),
                std::invalid_argument);
+}
+
+// Plans made once and passed in (a speed sweep does) give the same results
+// as plans made per call; a plan for something else is refused.
+TEST(JacobianPattern, PlansPassedInAreCheckedAndGiveTheSameResults) {
+  const PreparedScene scene =
+      prepare_scene(std::string(RAILSTAB_CASES_DIR) + "/thesis_bogie_tangent.toml", {});
+  const Model& model = scene.model;
+  const double V = scene.speed_m_per_s;
+  const RhsJacobianPlan whole = plan_rhs_jacobian(model);
+  const RhsJacobianPlan eq_plan = equilibrium_jacobian_plan(model);
+
+  EquilibriumOptions eq_opt;
+  eq_opt.jacobian_plan = &eq_plan;
+  const Eigen::VectorXd guess = lowered_nominal_state(model, V);
+  const EquilibriumResult with_plan = solve_equilibrium(model, V, guess, eq_opt);
+  const EquilibriumResult without = solve_equilibrium(model, V, guess);
+  EXPECT_EQ(with_plan.state, without.state);
+  EXPECT_EQ(with_plan.iterations, without.iterations);
+
+  LinearizationOptions lin_opt;
+  lin_opt.jacobian_plan = &whole;
+  EXPECT_EQ(linearize(model, V, without.state, lin_opt).A, linearize(model, V, without.state).A);
+
+  eq_opt.jacobian_plan = &whole;  // all rows and columns: not the equilibrium's
+  EXPECT_THROW(solve_equilibrium(model, V, guess, eq_opt), std::invalid_argument);
+  lin_opt.jacobian_plan = &eq_plan;
+  EXPECT_THROW(linearize(model, V, without.state, lin_opt), std::invalid_argument);
 }
