@@ -1,6 +1,7 @@
 #include "cli/contact_geometry_command.hpp"
 
 #include "contact_geometry/contact_geometry_summary.hpp"
+#include "io/gnuplot.hpp"
 #include "profiles/profile_contact_scene.hpp"
 #include "report/contact_geometry_report.hpp"
 
@@ -16,9 +17,11 @@ struct ContactGeometryArgs {
   std::string scene;
   std::string contact;
   std::string out_dir = "out";
+  bool plots = true;
 };
 
 void run_contact_geometry(const ContactGeometryArgs& a) {
+  if (a.plots) require_gnuplot();  // before the work, not after it
   const ProfileContactSpec spec = read_profile_contact(a.scene, a.contact);
   const ProfilePair pair = load_profile_pair(spec);
   const ContactGeometrySummary summary = summarise_contact_geometry(pair);
@@ -27,7 +30,7 @@ void run_contact_geometry(const ContactGeometryArgs& a) {
   const std::string prefix =
       (std::filesystem::path(a.out_dir) / (scene_name + "_" + spec.name)).string();
   const ContactGeometryFiles files =
-      write_contact_geometry_report(pair, summary, scene_name, spec.name, prefix);
+      write_contact_geometry_report(pair, summary, scene_name, spec.name, prefix, a.plots);
   std::cout << std::setprecision(4) << scene_name << " / " << spec.name << ": "
             << pair.wheel.source << " on " << pair.rail.source << "\n"
             << "  equivalent conicity (EN 15302) at 3 mm: " << summary.equivalent_conicity_at_3mm
@@ -58,6 +61,7 @@ void register_contact_geometry_command(CLI::App& app) {
   cmd->add_option("--contact", a->contact,
                   "name of the contact (default: the only one with geometry = \"profiles\")");
   cmd->add_option("--out", a->out_dir, "output directory")->capture_default_str();
+  cmd->add_flag("!--no-plots", a->plots, "do not run gnuplot (CSV and JSON only)");
   cmd->callback([a] { run_contact_geometry(*a); });
 }
 

@@ -541,11 +541,15 @@ std::vector<EigenPair> eigen_dense(const Eigen::MatrixXd& A) {
   if (solver.info() != Eigen::Success)
     throw std::runtime_error("eigen_dense: Eigen::EigenSolver did not converge");
   const double norm_A = A.norm();
+  // EigenSolver::eigenvectors() assembles and normalises the whole complex
+  // matrix on every call: once here, not once per column (that made the
+  // post-processing O(n^3) per column and most of the solve's cost).
+  const Eigen::MatrixXcd vectors = solver.eigenvectors();
+  const Eigen::VectorXcd& values = solver.eigenvalues();
   std::vector<EigenPair> pairs;
   pairs.reserve(std::size_t(A.rows()));
   for (Eigen::Index j = 0; j < A.rows(); ++j)
-    pairs.push_back(
-        make_eigenpair(A, norm_A, solver.eigenvalues()(j), solver.eigenvectors().col(j)));
+    pairs.push_back(make_eigenpair(A, norm_A, values(j), vectors.col(j)));
   sort_by_descending_real_part(pairs);
   return pairs;
 }

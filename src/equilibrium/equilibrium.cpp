@@ -42,6 +42,12 @@ std::vector<int> equation_rows(const Model& model, const std::vector<int>& only_
 
 }  // namespace
 
+RhsJacobianPlan equilibrium_jacobian_plan(const Model& model,
+                                          const std::vector<int>& only_positions) {
+  return plan_rhs_jacobian(model, equation_rows(model, only_positions),
+                           only_positions.empty() ? equilibrium_unknowns(model) : only_positions);
+}
+
 Eigen::VectorXd nominal_state(const Model& model, double speed_m_per_s) {
   Eigen::VectorXd x = Eigen::VectorXd::Zero(model.state_size());
   const int n = model.n_coordinates;
@@ -127,6 +133,14 @@ EquilibriumResult solve_equilibrium(const Model& model, double speed_m_per_s,
       throw fail(msg.str());
     }
   };
+  // d(equations)/d(unknowns) only: the columns Newton solves for, coloured.
+  const RhsJacobianPlan own_plan =
+      options.jacobian_plan ? RhsJacobianPlan{} : plan_rhs_jacobian(model, rows, unknowns);
+  const RhsJacobianPlan& jacobian_plan = options.jacobian_plan ? *options.jacobian_plan : own_plan;
+  if (jacobian_plan.rows != rows || jacobian_plan.columns != unknowns)
+    throw std::invalid_argument(
+        "equilibrium solver: options.jacobian_plan is not the plan of this model's equilibrium "
+        "equations and unknowns (use equilibrium_jacobian_plan)");
   Eigen::VectorXd r = at_iterate("residual", [&] { return residual(model, V, t, x); });
   for (int it = 0; it <= options.max_iterations; ++it) {
     Eigen::Index worst = 0;
@@ -138,11 +152,8 @@ EquilibriumResult solve_equilibrium(const Model& model, double speed_m_per_s,
       return result;
     }
     if (it == options.max_iterations) break;
-    const Eigen::MatrixXd jac =
-        at_iterate("Jacobian", [&] { return rhs_jacobian_ad(model, V, t, x); });
-    Eigen::MatrixXd J(m, m);
-    for (int i = 0; i < m; ++i)
-      for (int j = 0; j < m; ++j) J(i, j) = jac(rows[i], unknowns[j]);
+    const Eigen::MatrixXd J =
+        at_iterate("Jacobian", [&] { return rhs_jacobian_ad(model, jacobian_plan, V, t, x); });
     // Minimum-norm step: a neutral direction (e.g. an unrestrained
     // longitudinal drift) does not stop the solve.
     const Eigen::VectorXd step = J.completeOrthogonalDecomposition().solve(-r);

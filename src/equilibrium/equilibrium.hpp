@@ -8,6 +8,7 @@
 // spin *rates* of free-spinning wheelsets (they settle with the rolling
 // radii), and the internal states of force elements. Equations: every free
 // coordinate's acceleration is zero, and every internal state's rate.
+#include "linear/jacobian_pattern.hpp"
 #include "model/model.hpp"
 
 #include <Eigen/Dense>
@@ -38,6 +39,10 @@ struct EquilibriumOptions {
   // and the equations are their accelerations: a partial equilibrium, e.g.
   // a wheelset's height and roll for a given lateral offset.
   std::vector<int> only_positions;
+  // The coloured Jacobian's plan for these equations and unknowns, from
+  // equilibrium_jacobian_plan(model, only_positions), for callers that solve
+  // many times on one model (a speed sweep). nullptr: planned per solve.
+  const RhsJacobianPlan* jacobian_plan = nullptr;
 };
 
 struct EquilibriumResult {
@@ -55,6 +60,11 @@ struct EquilibriumResult {
 EquilibriumResult solve_equilibrium(const Model& model, double speed_m_per_s,
                                     const Eigen::VectorXd& guess,
                                     const EquilibriumOptions& options = {});
+
+// The plan of the Jacobian Newton uses: d(equations)/d(unknowns) only (the
+// rows and columns it solves for), coloured.
+RhsJacobianPlan equilibrium_jacobian_plan(const Model& model,
+                                          const std::vector<int>& only_positions = {});
 
 // Nominal state: every body at its nominal position, no offsets, wheelsets
 // spinning at V/r0, everything else at rest relative to its track frame,

@@ -15,7 +15,8 @@ namespace railstab {
 
 ModelCallbackData::ModelCallbackData(const Model& m, double speed, const RootFunctionSet& r,
                                      double cpu_budget_s)
-    : model(&m), speed_m_per_s(speed), roots(&r), workspace(m), cpu_start_(std::clock()),
+    : model(&m), speed_m_per_s(speed), roots(&r), workspace(m), jacobian_plan(plan_rhs_jacobian(m)),
+      cpu_start_(std::clock()),
       cpu_budget_s_(cpu_budget_s) {}
 
 bool ModelCallbackData::within_budget() {
@@ -59,7 +60,8 @@ int dense_jacobian(const ModelCallbackData& data, ForceSelection forces, double 
                    SUNMatrix J) {
   const long n = SUNDenseMatrix_Rows(J);
   Eigen::Map<Eigen::MatrixXd> jac(SUNDenseMatrix_Data(J), n, n);  // column-major
-  jac = rhs_jacobian_ad(*data.model, data.speed_m_per_s, t, as_eigen(y), forces);
+  jac = rhs_jacobian_ad(*data.model, data.jacobian_plan, data.speed_m_per_s, t, as_eigen(y),
+                        forces);
   return jac.allFinite() ? 0 : 1;
 }
 

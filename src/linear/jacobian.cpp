@@ -5,11 +5,87 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace railstab {
 
+namespace {
+
+void require_state_size(const Model& model, const Eigen::VectorXd& x, const char* who) {
+  if (x.size() != model.state_size())
+    throw std::invalid_argument(std::string(who) + ": state has " + std::to_string(x.size()) +
+                                " entries, model '" + model.name + "' has " +
+                                std::to_string(model.state_size()) + " states");
+}
+
+std::vector<int> all_indices(int n) {
+  std::vector<int> v(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) v[std::size_t(i)] = i;
+  return v;
+}
+
+}  // namespace
+
+RhsJacobianPlan plan_rhs_jacobian(const Model& model) {
+  return plan_rhs_jacobian(model, all_indices(model.state_size()),
+                           all_indices(model.state_size()));
+}
+
+RhsJacobianPlan plan_rhs_jacobian(const Model& model, std::vector<int> rows,
+                                  std::vector<int> columns) {
+  RhsJacobianPlan plan;
+  plan.pattern = sub_pattern(rhs_jacobian_pattern(model), rows, columns);
+  plan.rows = std::move(rows);
+  plan.columns = std::move(columns);
+  plan.colouring = colour_columns(plan.pattern);
+  return plan;
+}
+
+Eigen::MatrixXd rhs_jacobian_ad(const Model& model, const RhsJacobianPlan& plan,
+                                double speed_m_per_s, double t_s, const Eigen::VectorXd& x,
+                                ForceSelection forces) {
+  require_state_size(model, x, "rhs_jacobian_ad");
+  const int n = int(x.size());
+  const int n_rows = int(plan.rows.size()), n_cols = int(plan.columns.size());
+  if (plan.pattern.rows != n_rows || plan.pattern.cols != n_cols)
+    throw std::invalid_argument("rhs_jacobian_ad: plan's pattern does not match its rows/columns");
+  for (int c : plan.columns)
+    if (c < 0 || c >= n) throw std::invalid_argument("rhs_jacobian_ad: plan is for another model");
+  const std::vector<int>& colour = plan.colouring.colour_of_column;
+  Workspace<AdScalar> ws(model);
+  Eigen::MatrixXd jac = Eigen::MatrixXd::Zero(n_rows, n_cols);
+  VecX<AdScalar> x_ad(n), f_ad;
+  for (int i = 0; i < n; ++i) x_ad(i) = AdScalar(x(i), AdDerivatives::Zero());
+  for (int first = 0; first < plan.colouring.colours; first += kAdChunk) {
+    // Direction d of this evaluation is colour first + d: a 1 in each of its columns.
+    for (int j = 0; j < n_cols; ++j) {
+      AdDerivatives& d = x_ad(plan.columns[std::size_t(j)]).derivatives();
+      d.setZero();
+      const int slot = colour[std::size_t(j)] - first;
+      if (slot >= 0 && slot < kAdChunk) d(slot) = 1.0;
+    }
+    evaluate_rhs<AdScalar>(model, ws, t_s, speed_m_per_s, x_ad, f_ad, nullptr, forces);
+    for (int i = 0; i < n_rows; ++i) {
+      const AdDerivatives& d = f_ad(plan.rows[std::size_t(i)]).derivatives();
+      for (int j : plan.pattern.columns_of_row[std::size_t(i)]) {
+        const int slot = colour[std::size_t(j)] - first;
+        if (slot >= 0 && slot < kAdChunk) jac(i, j) = d(slot);
+      }
+    }
+  }
+  return jac;
+}
+
 Eigen::MatrixXd rhs_jacobian_ad(const Model& model, double speed_m_per_s, double t_s,
                                 const Eigen::VectorXd& x, ForceSelection forces) {
+  return rhs_jacobian_ad(model, plan_rhs_jacobian(model), speed_m_per_s, t_s, x, forces);
+}
+
+Eigen::MatrixXd rhs_jacobian_ad_dense(const Model& model, double speed_m_per_s, double t_s,
+                                      const Eigen::VectorXd& x, ForceSelection forces) {
+  require_state_size(model, x, "rhs_jacobian_ad_dense");
   const int n = int(x.size());
   Workspace<AdScalar> ws(model);
   Eigen::MatrixXd jac(n, n);

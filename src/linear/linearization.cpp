@@ -23,7 +23,15 @@ LinearModel linearize(const Model& model, double speed_m_per_s, const Eigen::Vec
         << " > " << options.max_equilibrium_residual << ")";
     throw std::runtime_error(msg.str());
   }
-  const Eigen::MatrixXd full = rhs_jacobian_ad(model, speed_m_per_s, options.time_s, x);
+  if (options.jacobian_plan &&
+      (options.jacobian_plan->rows.size() != size_t(model.state_size()) ||
+       options.jacobian_plan->columns.size() != size_t(model.state_size())))
+    throw std::invalid_argument("linearize: options.jacobian_plan is not the whole Jacobian's "
+                                "plan of this model (use plan_rhs_jacobian(model))");
+  const Eigen::MatrixXd full =
+      options.jacobian_plan
+          ? rhs_jacobian_ad(model, *options.jacobian_plan, speed_m_per_s, options.time_s, x)
+          : rhs_jacobian_ad(model, speed_m_per_s, options.time_s, x);
   // A position whose column is exactly zero is cyclic: drop it (its row only
   // says d q/dt = u and feeds nothing back).
   for (int k = 0; k < model.state_size(); ++k) {

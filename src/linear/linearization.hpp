@@ -6,6 +6,7 @@
 // (the spin angle of an axisymmetric wheelset, ERRATA 11a, or any other
 // cyclic coordinate) are removed together with their row: each removal drops
 // one exact zero eigenvalue and nothing else. The removal is reported.
+#include "linear/jacobian_pattern.hpp"
 #include "model/model.hpp"
 
 #include <Eigen/Dense>
@@ -26,6 +27,9 @@ struct LinearModel {
 struct LinearizationOptions {
   double time_s = 0.0;
   double max_equilibrium_residual = 1e-6;  // m/s^2 or rad/s^2
+  // The whole Jacobian's plan, plan_rhs_jacobian(model), for callers that
+  // linearise many times on one model. nullptr: planned per call.
+  const RhsJacobianPlan* jacobian_plan = nullptr;
 };
 
 // Throws std::runtime_error naming the worst residual when x is not an

@@ -44,7 +44,8 @@ ContactGeometryFiles write_contact_geometry_report(const ProfilePair& pair,
                                                    const ContactGeometrySummary& s,
                                                    const std::string& scene_name,
                                                    const std::string& contact_name,
-                                                   const std::string& prefix) {
+                                                   const std::string& prefix,
+                                                   bool plots) {
   ContactGeometryFiles files;
   files.characteristic_csv = prefix + "_characteristic.csv";
   files.conicity_csv = prefix + "_conicity.csv";
@@ -111,6 +112,8 @@ ContactGeometryFiles write_contact_geometry_report(const ProfilePair& pair,
           .end_object();
     j.end_array().end_object();
   });
+
+  if (!plots) return files;
 
   // Plot data: the left rail and the centred left wheel in the track frame
   // (mm), and one line per lateral shift from the rail contact point to the

@@ -16,11 +16,13 @@ struct ContactGeometryFiles {
 // Writes <prefix>_characteristic.csv, <prefix>_conicity.csv, <prefix>.json and
 // <prefix>_{profiles,delta_r,conicity}.png (each file whole or not at all;
 // a non-finite number is an error). `labels` name the scene and contact in
-// titles and JSON.
+// titles and JSON. With plots = false no plot data, script or PNG is
+// written and gnuplot is not run (files.plots stays empty).
 ContactGeometryFiles write_contact_geometry_report(const ProfilePair& pair,
                                                    const ContactGeometrySummary& summary,
                                                    const std::string& scene_name,
                                                    const std::string& contact_name,
-                                                   const std::string& prefix);
+                                                   const std::string& prefix,
+                                                   bool plots = true);
 
 }  // namespace railstab

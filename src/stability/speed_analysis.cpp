@@ -1,5 +1,6 @@
 #include "stability/speed_analysis.hpp"
 
+#include "linear/jacobian.hpp"
 #include "setup/model_error_context.hpp"
 
 #include "stability/mode_names.hpp"
@@ -38,7 +39,8 @@ std::vector<EigenPair> solve_eigen(const Eigen::MatrixXd& A, const StabilityOpti
 SpeedStability::SpeedStability(const Model& model, const Eigen::VectorXd& equilibrium_guess,
                                double guess_speed_m_per_s, StabilityOptions options)
     : model_(model), options_(options), last_equilibrium_(equilibrium_guess),
-      last_speed_(guess_speed_m_per_s) {}
+      last_speed_(guess_speed_m_per_s), jacobian_plan_(plan_rhs_jacobian(model)),
+      equilibrium_plan_(equilibrium_jacobian_plan(model)) {}
 
 StabilityPoint SpeedStability::at(double speed_m_per_s) {
   const auto start = std::chrono::steady_clock::now();
@@ -56,6 +58,7 @@ StabilityPoint SpeedStability::at(double speed_m_per_s) {
   p.time_s = options_.time_s;
   EquilibriumOptions eq_opt;
   eq_opt.time_s = options_.time_s;
+  eq_opt.jacobian_plan = &equilibrium_plan_;
   // Each stage names itself, the speed and the place in its errors
   // (setup/model_error_context.hpp).
   const double t = options_.time_s;
@@ -66,6 +69,7 @@ StabilityPoint SpeedStability::at(double speed_m_per_s) {
   last_speed_ = speed_m_per_s;
   LinearizationOptions lin_opt;
   lin_opt.time_s = options_.time_s;
+  lin_opt.jacobian_plan = &jacobian_plan_;
   p.linear = with_model_context(
       model, {"linearisation", speed_m_per_s, t, &p.equilibrium.state},
       [&] { return linearize(model, speed_m_per_s, p.equilibrium.state, lin_opt); });

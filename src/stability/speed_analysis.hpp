@@ -71,6 +71,8 @@ class SpeedStability {
   StabilityOptions options_;
   Eigen::VectorXd last_equilibrium_;
   double last_speed_;
+  // Coloured-Jacobian plans, made once for every speed.
+  RhsJacobianPlan jacobian_plan_, equilibrium_plan_;
 };
 
 std::vector<EigenPair> solve_eigen(const Eigen::MatrixXd& A, const StabilityOptions& options);

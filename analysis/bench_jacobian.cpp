@@ -1,0 +1,196 @@
+// The linearisation hot path before and after issue 11, measured in one run
+// (CPU time of this process, 5 batches of >= 0.2 s, median of the batch
+// means), on the thesis vehicle and the coach:
+//  - the AD Jacobian: dense (one direction per column, 16 per evaluation:
+//    the old product path) against coloured (one direction per colour of
+//    the structural pattern), in residual evaluations (rhs<double>) per
+//    Jacobian; the planning (pattern + colouring) alone;
+//  - the equilibrium Newton Jacobian: the whole coloured Jacobian with the
+//    equations' rows and unknowns' columns copied out (as before) against
+//    the coloured Jacobian of those rows and columns only;
+//  - eigen_dense: the old post-processing (EigenSolver::eigenvectors()
+//    rebuilt for every column) against the current one (built once), with
+//    the results compared bit for bit;
+//  - a critical-speed search in-process (CLI defaults: 5..150 m/s, grid
+//    2.5 m/s, automatic solver; no plots), the number the build flags are
+//    chosen by (its critical speed printed to 12 digits).
+//   build/bench_jacobian [cases-dir]
+#include "eigen/eigen_analysis.hpp"
+#include "equilibrium/equilibrium.hpp"
+#include "linear/jacobian.hpp"
+#include "linear/linearization.hpp"
+#include "model/equations_of_motion.hpp"
+#include "setup/prepare_scene.hpp"
+#include "stability/speed_analysis.hpp"
+
+#include <algorithm>
+#include <complex>
+#include <cstdio>
+#include <ctime>
+#include <functional>
+#include <string>
+#include <vector>
+
+using namespace railstab;
+
+namespace {
+
+double cpu_seconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
+
+// CPU seconds per call: a warm-up call, then 5 batches of at least
+// `batch_s` each; the median of the batch means.
+double seconds_per_call(const std::function<void()>& call, double batch_s = 0.2) {
+  call();
+  std::vector<double> means;
+  for (int batch = 0; batch < 5; ++batch) {
+    long calls = 0;
+    const double start = cpu_seconds();
+    double elapsed = 0.0;
+    do {
+      call();
+      ++calls;
+      elapsed = cpu_seconds() - start;
+    } while (elapsed < batch_s);
+    means.push_back(elapsed / double(calls));
+  }
+  std::sort(means.begin(), means.end());
+  return means[2];
+}
+
+// --- eigen_dense as it was before issue 11 (reference for the timing) -------
+using Complex = std::complex<double>;
+
+Eigen::VectorXcd canonical_phase(Eigen::VectorXcd v) {
+  const double norm = v.norm();
+  if (norm == 0.0) return v;
+  Eigen::Index peak = 0;
+  v.cwiseAbs().maxCoeff(&peak);
+  const Complex unit_phase = v(peak) / std::abs(v(peak));
+  return v * (std::conj(unit_phase) / norm);
+}
+
+std::vector<EigenPair> legacy_eigen_dense(const Eigen::MatrixXd& A) {
+  Eigen::EigenSolver<Eigen::MatrixXd> solver(A, true);
+  const double norm_A = A.norm();
+  std::vector<EigenPair> pairs;
+  for (Eigen::Index j = 0; j < A.rows(); ++j) {
+    // The old loop: solver.eigenvectors() (the whole matrix) per column.
+    EigenPair p{solver.eigenvalues()(j), canonical_phase(solver.eigenvectors().col(j)), 0.0};
+    const Eigen::VectorXd Av_re = A * p.vector.real(), Av_im = A * p.vector.imag();
+    const Eigen::VectorXcd Av = Av_re.cast<Complex>() + Complex(0.0, 1.0) * Av_im.cast<Complex>();
+    p.residual = (Av - p.value * p.vector).norm() / (norm_A * p.vector.norm());
+    pairs.push_back(p);
+  }
+  std::sort(pairs.begin(), pairs.end(), [](const EigenPair& a, const EigenPair& b) {
+    if (a.value.real() != b.value.real()) return a.value.real() > b.value.real();
+    return a.value.imag() > b.value.imag();
+  });
+  return pairs;
+}
+
+bool same_pairs(const std::vector<EigenPair>& a, const std::vector<EigenPair>& b) {
+  if (a.size() != b.size()) return false;
+  for (size_t i = 0; i < a.size(); ++i)
+    if (a[i].value != b[i].value || a[i].vector != b[i].vector || a[i].residual != b[i].residual)
+      return false;
+  return true;
+}
+
+void bench_scene(const std::string& path, bool search) {
+  const PreparedScene scene = prepare_scene(path, {});
+  const Model& model = scene.model;
+  const double V = scene.speed_m_per_s;
+  const Eigen::VectorXd x = perturbed_initial_state(scene);
+  const int n = model.state_size();
+  std::printf("%s: %d bodies, %d states\n", model.name.c_str(), int(model.bodies.size()), n);
+
+  Workspace<double> ws(model);
+  Eigen::VectorXd xdot;
+  const double t_rhs = seconds_per_call([&] { evaluate_rhs<double>(model, ws, 0.0, V, x, xdot); });
+  const RhsJacobianPlan plan = plan_rhs_jacobian(model);
+  const double t_plan = seconds_per_call([&] { plan_rhs_jacobian(model); });
+  const double t_dense = seconds_per_call([&] { rhs_jacobian_ad_dense(model, V, 0.0, x); });
+  const double t_col = seconds_per_call([&] { rhs_jacobian_ad(model, plan, V, 0.0, x); });
+  const double t_col_planned =
+      seconds_per_call([&] { rhs_jacobian_ad(model, V, 0.0, x); });
+  const bool equal =
+      rhs_jacobian_ad(model, plan, V, 0.0, x) == rhs_jacobian_ad_dense(model, V, 0.0, x);
+  std::printf("  pattern: %ld non-zeros (%.1f %% dense), longest row %d; %d colours, %d AD "
+              "evaluations (dense AD: %d)\n",
+              plan.pattern.nonzeros(), 100.0 * plan.pattern.density(),
+              plan.pattern.max_row_nonzeros(), plan.colouring.colours, plan.passes(),
+              (n + kAdChunk - 1) / kAdChunk);
+  std::printf("  rhs<double>                    %9.2f us\n", t_rhs * 1e6);
+  std::printf("  AD Jacobian, dense (before)    %9.2f us = %5.1f rhs\n", t_dense * 1e6,
+              t_dense / t_rhs);
+  std::printf("  AD Jacobian, coloured (after)  %9.2f us = %5.1f rhs   after/before %.3f%s\n",
+              t_col * 1e6, t_col / t_rhs, t_col / t_dense,
+              equal ? "  (bit-identical)" : "  (DIFFERENT!)");
+  std::printf("    planning alone               %9.2f us; coloured incl. planning %.2f us = %.1f rhs\n",
+              t_plan * 1e6, t_col_planned * 1e6, t_col_planned / t_rhs);
+
+  // Equilibrium Newton: before, the whole Jacobian and a copy of the block.
+  std::vector<int> rows;
+  for (int k = model.n_coordinates; k < n; ++k) rows.push_back(k);
+  const std::vector<int> unknowns = equilibrium_unknowns(model);
+  const RhsJacobianPlan eq_plan = plan_rhs_jacobian(model, rows, unknowns);
+  const Eigen::VectorXd xe = scene.equilibrium.state;
+  const double t_eq_before = seconds_per_call([&] {
+    const Eigen::MatrixXd jac = rhs_jacobian_ad(model, plan, V, 0.0, xe);
+    Eigen::MatrixXd J(rows.size(), unknowns.size());
+    for (size_t i = 0; i < rows.size(); ++i)
+      for (size_t j = 0; j < unknowns.size(); ++j)
+        J(Eigen::Index(i), Eigen::Index(j)) = jac(rows[i], unknowns[j]);
+  });
+  const double t_eq_dense = seconds_per_call([&] {
+    const Eigen::MatrixXd jac = rhs_jacobian_ad_dense(model, V, 0.0, xe);
+    Eigen::MatrixXd J(rows.size(), unknowns.size());
+    for (size_t i = 0; i < rows.size(); ++i)
+      for (size_t j = 0; j < unknowns.size(); ++j)
+        J(Eigen::Index(i), Eigen::Index(j)) = jac(rows[i], unknowns[j]);
+  });
+  const double t_eq_after = seconds_per_call([&] { rhs_jacobian_ad(model, eq_plan, V, 0.0, xe); });
+  std::printf("  equilibrium Jacobian (%zu x %zu): dense %.2f us = %.1f rhs; whole coloured %.2f "
+              "us; unknowns only %.2f us = %.1f rhs (%d colours, %d evaluations); "
+              "after/dense %.3f\n",
+              rows.size(), unknowns.size(), t_eq_dense * 1e6, t_eq_dense / t_rhs,
+              t_eq_before * 1e6, t_eq_after * 1e6, t_eq_after / t_rhs,
+              eq_plan.colouring.colours, eq_plan.passes(), t_eq_after / t_eq_dense);
+
+  const LinearModel lin = linearize(model, V, scene.equilibrium.state);
+  const double t_eig_before = seconds_per_call([&] { legacy_eigen_dense(lin.A); });
+  const double t_eig_after = seconds_per_call([&] { eigen_dense(lin.A); });
+  const double t_solver =
+      seconds_per_call([&] { Eigen::EigenSolver<Eigen::MatrixXd> s(lin.A, true); });
+  std::printf("  eigen_dense (%d states): before %.3f ms, after %.3f ms (after/before %.3f; "
+              "EigenSolver alone %.3f ms)%s\n",
+              int(lin.A.rows()), t_eig_before * 1e3, t_eig_after * 1e3,
+              t_eig_after / t_eig_before, t_solver * 1e3,
+              same_pairs(legacy_eigen_dense(lin.A), eigen_dense(lin.A)) ? " (bit-identical)"
+                                                                        : " (DIFFERENT!)");
+
+  if (!search) return;
+  CriticalSpeedOptions cs;  // the CLI's defaults for critical-speed
+  cs.from_m_per_s = 5.0;
+  cs.to_m_per_s = 150.0;
+  cs.grid_step_m_per_s = 2.5;
+  CriticalSpeedResult r;
+  const double t_search = seconds_per_call(
+      [&] { r = find_critical_speed(model, scene.equilibrium.state, V, cs); }, 0.5);
+  std::printf("  critical-speed search (5..150 m/s, step 2.5, no plots): %.4f s CPU, %d speeds, "
+              "V_crit %.12g m/s\n",
+              t_search, r.evaluations, r.critical_speed_found ? r.critical_speed_m_per_s : 0.0);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::string dir = argc > 1 ? argv[1] : "cases";
+  bench_scene(dir + "/thesis_vehicle_tangent.toml", true);
+  bench_scene(dir + "/coach_tangent.toml", false);
+  return 0;
+}
