@@ -1,6 +1,7 @@
 #include "equilibrium/equilibrium.hpp"
 
 #include "contact/wheel_rail.hpp"
+#include "equilibrium/pseudo_transient.hpp"
 #include "linear/jacobian.hpp"
 #include "model/equations_of_motion.hpp"
 
@@ -85,30 +86,27 @@ Eigen::VectorXd lowered_nominal_state(const Model& model, double speed_m_per_s) 
   return guess;
 }
 
-EquilibriumResult solve_equilibrium(const Model& model, double speed_m_per_s,
-                                    const Eigen::VectorXd& guess,
-                                    const EquilibriumOptions& options) {
+namespace {
+
+// Newton's method with a backtracking line search and a Levenberg-Marquardt
+// fallback, from `guess`. Throws EquilibriumError when it does not converge
+// or the model cannot be evaluated at an accepted iterate.
+EquilibriumResult newton_equilibrium(const Model& model, double speed_m_per_s,
+                                     const Eigen::VectorXd& guess,
+                                     const EquilibriumOptions& options,
+                                     const std::vector<int>& unknowns,
+                                     const std::vector<int>& rows,
+                                     const RhsJacobianPlan& jacobian_plan) {
   const int n = model.n_coordinates;
   const double t = options.time_s;
   const double V = speed_m_per_s;
-  for (int k : options.only_positions)
-    if (!model.is_position(k) || is_spin_angle(model, k))
-      throw std::invalid_argument("equilibrium solver: only_positions holds state " +
-                                  std::to_string(k) + ", not a non-spin position");
-  const std::vector<int> unknowns =
-      options.only_positions.empty() ? equilibrium_unknowns(model) : options.only_positions;
-  const std::vector<int> rows = equation_rows(model, options.only_positions);
   const int m = int(unknowns.size());
-  auto residual = [&](const Model&, double, double, const Eigen::VectorXd& state) {
+  auto residual = [&](const Eigen::VectorXd& state) {
     const Eigen::VectorXd xdot = rhs(model, V, t, state);
     Eigen::VectorXd r(m);
     for (int i = 0; i < m; ++i) r(i) = xdot(rows[i]);
     return r;
   };
-  if (guess.size() != model.state_size())
-    throw std::invalid_argument("equilibrium solver: guess has " + std::to_string(guess.size()) +
-                                " entries, the model " + std::to_string(model.state_size()) +
-                                " states");
   Eigen::VectorXd x = guess;
   // Velocities other than spin rates are zero at an equilibrium.
   for (int k = 0; k < n; ++k)
@@ -133,15 +131,7 @@ EquilibriumResult solve_equilibrium(const Model& model, double speed_m_per_s,
       throw fail(msg.str());
     }
   };
-  // d(equations)/d(unknowns) only: the columns Newton solves for, coloured.
-  const RhsJacobianPlan own_plan =
-      options.jacobian_plan ? RhsJacobianPlan{} : plan_rhs_jacobian(model, rows, unknowns);
-  const RhsJacobianPlan& jacobian_plan = options.jacobian_plan ? *options.jacobian_plan : own_plan;
-  if (jacobian_plan.rows != rows || jacobian_plan.columns != unknowns)
-    throw std::invalid_argument(
-        "equilibrium solver: options.jacobian_plan is not the plan of this model's equilibrium "
-        "equations and unknowns (use equilibrium_jacobian_plan)");
-  Eigen::VectorXd r = at_iterate("residual", [&] { return residual(model, V, t, x); });
+  Eigen::VectorXd r = at_iterate("residual", [&] { return residual(x); });
   for (int it = 0; it <= options.max_iterations; ++it) {
     Eigen::Index worst = 0;
     result.max_acceleration = m > 0 ? r.cwiseAbs().maxCoeff(&worst) : 0.0;
@@ -167,7 +157,7 @@ EquilibriumResult solve_equilibrium(const Model& model, double speed_m_per_s,
       x_try = x;
       for (int j = 0; j < m; ++j) x_try(unknowns[j]) += alpha * step(j);
       try {
-        r_try = residual(model, V, t, x_try);
+        r_try = residual(x_try);
         if (r_try.norm() < (1.0 - 1e-4 * alpha) * r0) {
           accepted = true;
           break;
@@ -196,7 +186,7 @@ EquilibriumResult solve_equilibrium(const Model& model, double speed_m_per_s,
         x_try = x;
         for (int j = 0; j < m; ++j) x_try(unknowns[j]) += lm(j);
         try {
-          r_try = residual(model, V, t, x_try);
+          r_try = residual(x_try);
           accepted = r_try.norm() < (1.0 - 1e-6) * r0;
         } catch (const std::bad_alloc&) {
           throw;
@@ -214,6 +204,67 @@ EquilibriumResult solve_equilibrium(const Model& model, double speed_m_per_s,
       << " Newton iterations the largest acceleration residual is " << result.max_acceleration
       << " (state " << result.worst_state << ")";
   throw fail(msg.str());
+}
+
+}  // namespace
+
+EquilibriumResult solve_equilibrium(const Model& model, double speed_m_per_s,
+                                    const Eigen::VectorXd& guess,
+                                    const EquilibriumOptions& options) {
+  for (int k : options.only_positions)
+    if (!model.is_position(k) || is_spin_angle(model, k))
+      throw std::invalid_argument("equilibrium solver: only_positions holds state " +
+                                  std::to_string(k) + ", not a non-spin position");
+  if (guess.size() != model.state_size())
+    throw std::invalid_argument("equilibrium solver: guess has " + std::to_string(guess.size()) +
+                                " entries, the model " + std::to_string(model.state_size()) +
+                                " states");
+  const std::vector<int> unknowns =
+      options.only_positions.empty() ? equilibrium_unknowns(model) : options.only_positions;
+  const std::vector<int> rows = equation_rows(model, options.only_positions);
+  // d(equations)/d(unknowns) only: the columns Newton solves for, coloured.
+  const RhsJacobianPlan own_plan =
+      options.jacobian_plan ? RhsJacobianPlan{} : plan_rhs_jacobian(model, rows, unknowns);
+  const RhsJacobianPlan& jacobian_plan = options.jacobian_plan ? *options.jacobian_plan : own_plan;
+  if (jacobian_plan.rows != rows || jacobian_plan.columns != unknowns)
+    throw std::invalid_argument(
+        "equilibrium solver: options.jacobian_plan is not the plan of this model's equilibrium "
+        "equations and unknowns (use equilibrium_jacobian_plan)");
+  try {
+    return newton_equilibrium(model, speed_m_per_s, guess, options, unknowns, rows,
+                              jacobian_plan);
+  } catch (const EquilibriumError& newton_error) {
+    // A partial equilibrium holds states fixed: it has no motion to follow.
+    if (!options.only_positions.empty() || !options.pseudo_transient_fallback) throw;
+    // Newton from the guess failed (a real profile pair's contact jumps, a
+    // curve entered from the centred position): let the vehicle settle by
+    // pseudo-transient continuation from the guess, then polish by Newton.
+    PseudoTransientOptions pto;
+    pto.time_s = options.time_s;
+    pto.tolerance = std::max(options.acceleration_tolerance, 1e-6);
+    Eigen::VectorXd start = guess;
+    const int n = model.n_coordinates;
+    for (int k = 0; k < n; ++k)
+      if (!is_spin_angle(model, k)) start(n + k) = 0.0;
+    const PseudoTransientResult settled = settle_by_pseudo_transient(model, speed_m_per_s, start, pto);
+    if (settled.converged) {
+      try {
+        EquilibriumResult polished = newton_equilibrium(model, speed_m_per_s, settled.state, options,
+                                                        unknowns, rows, jacobian_plan);
+        polished.pseudo_transient_steps = settled.steps;
+        return polished;
+      } catch (const EquilibriumError&) {
+      }
+    }
+    std::ostringstream msg;
+    msg << newton_error.what() << "; pseudo-transient continuation from the guess: "
+        << (settled.converged ? "settled, but Newton's method did not converge from there"
+                              : settled.failure)
+        << " after " << settled.steps << " steps (" << settled.pseudo_time_s
+        << " s of pseudo-time), largest rate " << settled.max_rate << " (state "
+        << settled.worst_state << ")";
+    throw EquilibriumError(msg.str(), newton_error.last_state, newton_error.worst_state);
+  }
 }
 
 }  // namespace railstab

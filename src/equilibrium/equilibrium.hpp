@@ -43,6 +43,10 @@ struct EquilibriumOptions {
   // equilibrium_jacobian_plan(model, only_positions), for callers that solve
   // many times on one model (a speed sweep). nullptr: planned per solve.
   const RhsJacobianPlan* jacobian_plan = nullptr;
+  // Where Newton from the guess fails, settle by pseudo-transient
+  // continuation (pseudo_transient.hpp) and polish by Newton (full
+  // equilibrium only).
+  bool pseudo_transient_fallback = true;
 };
 
 struct EquilibriumResult {
@@ -50,10 +54,11 @@ struct EquilibriumResult {
   int iterations = 0;
   double max_acceleration = 0.0;
   std::string worst_state;     // name of the largest residual
+  int pseudo_transient_steps = 0;  // > 0: Newton needed the pseudo-transient start
 };
 
 // Throws EquilibriumError ("no equilibrium ...: residual of <state> ...")
-// when Newton does not converge or the model cannot be evaluated at an
+// when neither Newton nor the pseudo-transient fallback converges or the model cannot be evaluated at an
 // iterate (e.g. a wheel so far off the rail that its contact is undefined).
 // A trial point of the line search that the model cannot evaluate only
 // shortens the step.

@@ -37,12 +37,16 @@ std::string write_equilibrium_results(const PreparedScene& s, OutputSet& outputs
   std::ostringstream shown;
   shown << std::setprecision(6) << "equilibrium of " << model.name << " at "
         << s.speed_m_per_s << " m/s: " << s.equilibrium.iterations
-        << " Newton iterations, max acceleration residual " << s.equilibrium.max_acceleration
-        << "\n";
+        << " Newton iterations";
+  if (s.equilibrium.pseudo_transient_steps > 0)
+    shown << " (after " << s.equilibrium.pseudo_transient_steps
+          << " pseudo-transient steps from the nominal guess)";
+  shown << ", max acceleration residual " << s.equilibrium.max_acceleration << "\n";
   outputs.write(stem + "_equilibrium.json", [&](std::ostream& out) {
     JsonWriter j(out);
     j.begin_object().field("scene", model.name).field("speed_m_s", s.speed_m_per_s);
     j.field("newton_iterations", s.equilibrium.iterations)
+        .field("pseudo_transient_steps", s.equilibrium.pseudo_transient_steps)
         .field("max_acceleration_residual", s.equilibrium.max_acceleration);
     j.key("bodies").begin_array();
     for (size_t b = 0; b < model.bodies.size(); ++b) {
