@@ -1,5 +1,7 @@
 #include "report/equilibrium_report.hpp"
 
+#include "contact/wheel_forces.hpp"
+
 #include "io/json_writer.hpp"
 #include "model/equations_of_motion.hpp"
 
@@ -29,6 +31,8 @@ std::string write_equilibrium_results(const PreparedScene& s, OutputSet& outputs
   const Model& model = s.model;
   EvaluationDetails details;
   rhs(model, s.speed_m_per_s, 0.0, s.equilibrium.state, &details);
+  const std::vector<WheelForces> wheels =
+      wheel_forces(model, s.speed_m_per_s, 0.0, s.equilibrium.state);
   Eigen::MatrixXd q6, qd6;
   model.full_coordinates(0.0, s.speed_m_per_s, s.equilibrium.state, q6, qd6);
   check_finite_equilibrium(model, s.speed_m_per_s, q6, qd6);
@@ -70,6 +74,8 @@ std::string write_equilibrium_results(const PreparedScene& s, OutputSet& outputs
         const WheelContact<double>& w = c.wheel;
         j.begin_object()
             .field("side", w.side > 0 ? "left" : "right")
+            .field("contact_point", w.slot)
+            .field("contact_angle_rad", w.contact_angle_rad)
             .field("normal_force_N", w.normal_force_N)
             .field("penetration_m", w.penetration_m)
             .field("rolling_radius_m", w.rolling_radius_m)
@@ -88,9 +94,35 @@ std::string write_equilibrium_results(const PreparedScene& s, OutputSet& outputs
               << ", " << w.creep_spin_per_m << " 1/m), creep forces (" << w.creep_force_x_N
               << ", " << w.creep_force_y_N << " N, " << w.spin_moment_N_m << " N m)\n";
       }
+      j.end_array();
+      // Y, Q and Y/Q per wheel (contact/wheel_forces.hpp), against Nadal.
+      j.key("wheel_forces").begin_array();
+      for (const WheelForces& w : wheels) {
+        if (w.body != int(b)) continue;
+        j.begin_object()
+            .field("side", w.side > 0 ? "left" : "right")
+            .field("Y_N", w.Y_N)
+            .field("Q_N", w.Q_N);
+        if (w.y_over_q) j.field("Y_over_Q", *w.y_over_q);
+        else j.key("Y_over_Q").null();
+        if (w.nadal_limit) j.field("nadal_limit", *w.nadal_limit);
+        else j.key("nadal_limit").null();
+        j.end_object();
+        shown << "      " << (w.side > 0 ? "left " : "right") << " wheel Y " << w.Y_N
+              << " N, Q " << w.Q_N << " N";
+        if (w.y_over_q) shown << ", Y/Q " << *w.y_over_q;
+        if (w.nadal_limit) shown << " (Nadal's limit " << *w.nadal_limit << ")";
+        shown << "\n";
+      }
       j.end_array().end_object();
     }
-    j.end_array().end_object();
+    j.end_array();
+    if (const auto w = wheel_beyond_nadal_limit(wheels)) {
+      j.field("warning", nadal_warning(model, *w));
+      shown << "warning: " << nadal_warning(model, *w) << "\n";
+    } else
+      j.key("warning").null();
+    j.end_object();
   });
   return shown.str();
 }

@@ -1,5 +1,6 @@
 #include "stability/speed_analysis.hpp"
 
+#include "contact/wheel_forces.hpp"
 #include "linear/jacobian.hpp"
 #include "setup/model_error_context.hpp"
 
@@ -42,29 +43,67 @@ SpeedStability::SpeedStability(const Model& model, const Eigen::VectorXd& equili
       last_speed_(guess_speed_m_per_s), jacobian_plan_(plan_rhs_jacobian(model)),
       equilibrium_plan_(equilibrium_jacobian_plan(model)) {}
 
+// The last steady state as the guess at another speed (spin rates scaled).
+Eigen::VectorXd SpeedStability::guess_at(const Eigen::VectorXd& x, double from_m_per_s,
+                                         double to_m_per_s) const {
+  Eigen::VectorXd guess = x;
+  const int n = model_.n_coordinates;
+  for (int k = 0; k < n; ++k) {
+    const auto [b, c] = model_.coordinate_of_state[k];
+    if (model_.bodies[b].wheelset() && c == int(CoordinateIndex::pitch) && from_m_per_s > 0.0)
+      guess(n + k) *= to_m_per_s / from_m_per_s;
+  }
+  return guess;
+}
+
+// Natural continuation in speed: Newton from the last steady state; where it
+// fails, the step from the last speed is halved (up to 6 times) so that
+// Newton follows the branch the sweep is on; only then pseudo-transient
+// continuation at the target speed (which converges to whatever steady
+// state the motion leads to, possibly another branch).
+EquilibriumResult SpeedStability::steady_state_at(double speed_m_per_s) {
+  EquilibriumOptions newton;
+  newton.time_s = options_.time_s;
+  newton.jacobian_plan = &equilibrium_plan_;
+  newton.pseudo_transient_fallback = false;
+  try {
+    return solve_equilibrium(model_, speed_m_per_s,
+                             guess_at(last_equilibrium_, last_speed_, speed_m_per_s), newton);
+  } catch (const EquilibriumError&) {
+  }
+  double from = last_speed_;
+  Eigen::VectorXd x = last_equilibrium_;
+  double step = 0.5 * (speed_m_per_s - from);
+  for (int halvings = 1; from > 0.0 && halvings <= 6;) {
+    const bool last = std::abs(speed_m_per_s - from) <= std::abs(step);
+    const double next = last ? speed_m_per_s : from + step;
+    try {
+      EquilibriumResult r = solve_equilibrium(model_, next, guess_at(x, from, next), newton);
+      if (last) return r;
+      x = r.state;
+      from = next;
+    } catch (const EquilibriumError&) {
+      step *= 0.5;
+      ++halvings;
+    }
+  }
+  EquilibriumOptions settle = newton;
+  settle.pseudo_transient_fallback = true;
+  return solve_equilibrium(model_, speed_m_per_s,
+                           guess_at(last_equilibrium_, last_speed_, speed_m_per_s), settle);
+}
+
 StabilityPoint SpeedStability::at(double speed_m_per_s) {
   const auto start = std::chrono::steady_clock::now();
   const Model& model = model_;
-  // Continuation: spin rates scale with the speed.
-  Eigen::VectorXd guess = last_equilibrium_;
-  const int n = model.n_coordinates;
-  for (int k = 0; k < n; ++k) {
-    const auto [b, c] = model.coordinate_of_state[k];
-    if (model.bodies[b].wheelset() && c == int(CoordinateIndex::pitch) && last_speed_ > 0.0)
-      guess(n + k) *= speed_m_per_s / last_speed_;
-  }
   StabilityPoint p;
   p.speed_m_per_s = speed_m_per_s;
   p.time_s = options_.time_s;
-  EquilibriumOptions eq_opt;
-  eq_opt.time_s = options_.time_s;
-  eq_opt.jacobian_plan = &equilibrium_plan_;
   // Each stage names itself, the speed and the place in its errors
   // (setup/model_error_context.hpp).
   const double t = options_.time_s;
-  p.equilibrium = with_model_context(model, {"steady state", speed_m_per_s, t}, [&] {
-    return solve_equilibrium(model, speed_m_per_s, guess, eq_opt);
-  });
+  p.equilibrium = with_model_context(model, {"steady state", speed_m_per_s, t},
+                                     [&] { return steady_state_at(speed_m_per_s); });
   last_equilibrium_ = p.equilibrium.state;
   last_speed_ = speed_m_per_s;
   LinearizationOptions lin_opt;
@@ -87,11 +126,15 @@ StabilityPoint SpeedStability::at(double speed_m_per_s) {
         p.modes[i].eigenvalue.real() > 0.0 && p.modes[i].eigenvalue.imag() >= 0.0)
       p.unstable_above_band.push_back(i);
   p.max_real_part = p.least_stable >= 0 ? p.modes[p.least_stable].eigenvalue.real() : -INFINITY;
+  bool has_profiles = false;
   for (const Body& b : model.bodies) {
     const int k = b.state_index[int(CoordinateIndex::y)];
     if (!b.wheelset() || k < 0) continue;
     const ContactSpec& contact = model.contacts[b.wheelset()->contact].spec;
-    if (contact.geometry == ContactGeometryKind::profiles) continue;  // has its flange
+    if (contact.geometry == ContactGeometryKind::profiles) {  // has its flange
+      has_profiles = true;
+      continue;
+    }
     const double clearance = contact.flange_clearance_m;
     if (std::abs(p.equilibrium.state(k)) > clearance && p.validity_warning.empty()) {
       std::ostringstream w;
@@ -101,6 +144,12 @@ StabilityPoint SpeedStability::at(double speed_m_per_s) {
       p.validity_warning = w.str();
     }
   }
+  // Real profiles guide the wheelset by its flange: the limit is flange
+  // climbing, Y/Q against Nadal's limit (contact/wheel_forces.hpp).
+  if (has_profiles && p.validity_warning.empty())
+    if (const auto w = wheel_beyond_nadal_limit(
+            wheel_forces(model, speed_m_per_s, t, p.equilibrium.state)))
+      p.validity_warning = nadal_warning(model, *w);
   p.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return p;
 }

@@ -49,7 +49,9 @@ struct StabilityPoint {
                                   // the lateral-plane modes (tables, damping criterion)
   double max_real_part = 0.0;     // of the non-neutral modes (1/s)
   // Non-empty when a wheelset's steady lateral shift exceeds its flange
-  // clearance: the flangeless contact model is outside its validity there.
+  // clearance (the flangeless contact model is outside its validity there)
+  // or, on real profiles, a wheel's Y/Q exceeds Nadal's limit (flange
+  // climbing: contact/wheel_forces.hpp).
   std::string validity_warning;
   // Unstable non-neutral modes above the hunting band (indices into modes).
   std::vector<int> unstable_above_band;
@@ -67,6 +69,8 @@ class SpeedStability {
   StabilityPoint at(double speed_m_per_s);
 
  private:
+  Eigen::VectorXd guess_at(const Eigen::VectorXd& x, double from_m_per_s, double to_m_per_s) const;
+  EquilibriumResult steady_state_at(double speed_m_per_s);
   const Model& model_;
   StabilityOptions options_;
   Eigen::VectorXd last_equilibrium_;

@@ -8,6 +8,7 @@
 //   = M g) and give the centripetal force M V^2 / R towards the curve centre;
 // - the steady state is the one the vehicle reaches when it runs into the
 //   curve: a time simulation from the end of the transition settles on it.
+#include "contact/wheel_forces.hpp"
 #include "equilibrium/equilibrium.hpp"
 #include "integrate/integrator.hpp"
 #include "io/scene_loader.hpp"
@@ -19,6 +20,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 
 using namespace railstab;
 
@@ -126,4 +128,73 @@ TEST(SteadyCurvingProfiles, EquilibriumIsWhereTheSimulatedVehicleSettles) {
                 settled(state_of(s.model, b + ".yaw_rad")), 1e-5)
         << b;
   }
+}
+
+// A tight curve: R = 300 m, cant 150 mm, 22 m/s (V^2/R = 1.61 m/s^2, cant
+// deficiency 1.61 * 1.5 / 9.81 - 0.15 = 97 mm). The leading wheelset is
+// guided by two-point contact on the flange root of its outer wheel (38 and
+// 51 deg): an equilibrium, not a failure. Checked: the weight on the wheels
+// (1e-6), the centripetal force (2e-3), two loaded flange-root points,
+// and Y/Q (contact/wheel_forces.hpp) of the flanging wheel positive and
+// below EN 14363's 0.8 and Nadal's limit for S1002 (beta ~ 70 deg, mu 0.4:
+// 1.12), with no Nadal warning; Q summed over the wheels equals the sum of
+// the contact forces' components normal to each wheelset's track plane.
+TEST(SteadyCurvingProfiles, TightCurveFlangeContactIsAnEquilibriumWithinNadal) {
+  std::ifstream in(kScene);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  auto replace_all = [&](const std::string& from, const std::string& to) {
+    int count = 0;
+    for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size())) {
+      text.replace(at, from.size(), to);
+      ++count;
+    }
+    return count;
+  };
+  ASSERT_EQ(replace_all("end_radius_m = 1000.0", "end_radius_m = 300.0"), 1);
+  ASSERT_EQ(replace_all("end_cant_m = 0.05", "end_cant_m = 0.15"), 2);
+  ASSERT_EQ(replace_all("reference_arc_length_m = 100.0", "reference_arc_length_m = 2000.0"), 1);
+  const Model model = build_model(parse_scene(text, kScene));  // profiles relative to kScene
+  const double V = 22.0, R = 300.0;
+  const EquilibriumResult eq = solve_equilibrium(model, V, lowered_nominal_state(model, V));
+
+  Workspace<double> ws(model);
+  compute_all_body_motions<double>(model, ws, 0.0, V, eq.state);
+  EvaluationDetails details;
+  rhs(model, V, 0.0, eq.state, &details);
+  double mass = 0.0;
+  for (const Body& b : model.bodies) mass += b.mass_kg;
+  Eigen::Vector3d total = Eigen::Vector3d::Zero();
+  double flange_N = 0.0, normal_sum_T = 0.0, steepest_rad = 0.0;
+  int outer_points = 0;
+  for (const ContactSnapshot& c : details.contacts) {
+    total += ws.motions[size_t(c.body)].R_WI * c.wheel.force_I;
+    normal_sum_T += (ws.motions[size_t(c.body)].R_TI * c.wheel.force_I).z();
+    if (c.body != 0 || c.wheel.side > 0 || c.wheel.normal_force_N < 1e3) continue;
+    ++outer_points;
+    steepest_rad = std::max(steepest_rad, c.wheel.contact_angle_rad);
+    if (c.wheel.contact_angle_rad > 0.5) flange_N += c.wheel.normal_force_N;
+  }
+  const double g = model.gravity_m_per_s2;
+  EXPECT_NEAR(total.z(), mass * g, 1e-6 * mass * g);
+  EXPECT_NEAR(std::hypot(total.x(), total.y()), mass * V * V / R, 2e-3 * mass * V * V / R);
+  // The leading outer wheel on its flange root: two loaded points (> 1 kN),
+  // the steeper above 0.6 rad (34 deg; the tread is below 0.05 rad).
+  EXPECT_GE(outer_points, 2);
+  EXPECT_GT(steepest_rad, 0.6);
+  EXPECT_GT(flange_N, 1e4) << "no loaded flange contact on the leading outer wheel";
+
+  const std::vector<WheelForces> wheels = wheel_forces(model, V, 0.0, eq.state);
+  ASSERT_EQ(wheels.size(), 8u);
+  double q_sum = 0.0;
+  for (const WheelForces& w : wheels) q_sum += w.Q_N;
+  EXPECT_NEAR(q_sum, normal_sum_T, 1e-9 * mass * g);
+  const WheelForces* flanging = nullptr;
+  for (const WheelForces& w : wheels)
+    if (w.body == 0 && w.side < 0) flanging = &w;
+  ASSERT_NE(flanging, nullptr);
+  ASSERT_TRUE(flanging->y_over_q && flanging->nadal_limit);
+  EXPECT_GT(*flanging->y_over_q, 0.1);
+  EXPECT_LT(*flanging->y_over_q, 0.8);
+  EXPECT_NEAR(*flanging->nadal_limit, 1.12, 0.03);
+  EXPECT_FALSE(wheel_beyond_nadal_limit(wheels).has_value());
 }
