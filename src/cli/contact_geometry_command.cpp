@@ -2,7 +2,8 @@
 
 #include "contact_geometry/contact_geometry_summary.hpp"
 #include "io/gnuplot.hpp"
-#include "profiles/profile_contact_scene.hpp"
+#include "contact_geometry/profile_contact_geometry.hpp"
+#include "io/scene_loader.hpp"
 #include "report/contact_geometry_report.hpp"
 
 #include <filesystem>
@@ -20,10 +21,38 @@ struct ContactGeometryArgs {
   bool plots = true;
 };
 
+// The contact the command is about: --contact NAME, or the scene's only
+// contact with geometry = "profiles".
+const ContactSpec& chosen_profile_contact(const std::vector<ContactSpec>& contacts,
+                                          const ContactGeometryArgs& a) {
+  std::vector<const ContactSpec*> profile_contacts;
+  std::string names;
+  for (const ContactSpec& c : contacts)
+    if (c.geometry == ContactGeometryKind::profiles && c.profile_geometry) {
+      profile_contacts.push_back(&c);
+      names += (names.empty() ? "'" : ", '") + c.name + "'";
+    }
+  if (names.empty()) names = "none";
+  if (a.contact.empty()) {
+    if (profile_contacts.size() != 1)
+      throw SceneError(a.scene + ": contacts: expected exactly one contact with geometry = "
+                       "\"profiles\" (or name one with --contact), got " + names);
+    return *profile_contacts.front();
+  }
+  for (const ContactSpec* c : profile_contacts)
+    if (c->name == a.contact) return *c;
+  throw SceneError(a.scene + ": --contact '" + a.contact +
+                   "': expected the name of a contact with geometry = \"profiles\" in the "
+                   "scene, got no such contact (profile contacts: " + names + ")");
+}
+
 void run_contact_geometry(const ContactGeometryArgs& a) {
   if (a.plots) require_gnuplot();  // before the work, not after it
-  const ProfileContactSpec spec = read_profile_contact(a.scene, a.contact);
-  const ProfilePair pair = load_profile_pair(spec);
+  // The scene loader's own contact reader (the same keys, checks and
+  // messages as in a scene), for a whole scene or a file of contacts alone.
+  const std::vector<ContactSpec> contacts = load_scene_contacts(a.scene);
+  const ContactSpec& spec = chosen_profile_contact(contacts, a);
+  const ProfilePair& pair = spec.profile_geometry->pair;
   const ContactGeometrySummary summary = summarise_contact_geometry(pair);
   std::filesystem::create_directories(a.out_dir);
   const std::string scene_name = std::filesystem::path(a.scene).stem().string();

@@ -1571,6 +1571,19 @@ SceneSpec load_scene_file(const std::string& path) {
   return parse_scene(text, path);
 }
 
+std::vector<ContactSpec> load_scene_contacts(const std::string& path) {
+  std::string text;
+  try {
+    text = read_regular_file(path);
+  } catch (const std::runtime_error& e) {
+    throw SceneError(path + ": scene file: " + e.what());
+  }
+  const toml::table root = parse_toml(text, path);
+  const TableReader top(root, "", path,
+                        {"scene", "track", "contacts", "bodies", "elements", "simulation"});
+  return read_contacts(top);
+}
+
 // Without the file at hand, elements are named by name: after mirroring, an
 // element's index no longer matches its [[elements]] table in the file.
 void validate_scene(const SceneSpec& scene) {

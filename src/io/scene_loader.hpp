@@ -22,6 +22,13 @@ struct SceneError : std::runtime_error {
 // Reads the file, parses it and validates the result.
 SceneSpec load_scene_file(const std::string& path);
 
+// Reads only the [contacts.NAME] tables of a scene file, or of a file that
+// holds contacts alone (e.g. cases/s1002_uic60_contact.toml), each validated
+// as in a scene (profile contacts with their files read and their tables
+// built). The other sections are neither read nor checked: for commands
+// about a contact (contact-geometry).
+std::vector<ContactSpec> load_scene_contacts(const std::string& path);
+
 // Parses TOML text and validates the result; `source_name` (usually the file
 // path) prefixes every message and becomes SceneSpec::source_path.
 SceneSpec parse_scene(const std::string& toml_text, const std::string& source_name);

@@ -2,7 +2,8 @@
 // documented frame, and every kind of bad input gets an error naming the
 // file, the line where relevant and what was expected.
 #include "contact_geometry/rigid_contact.hpp"
-#include "profiles/profile_contact_scene.hpp"
+#include "contact_geometry/profile_contact_geometry.hpp"
+#include "io/scene_loader.hpp"
 #include "profiles/profile_readers.hpp"
 
 #include <gtest/gtest.h>
@@ -176,22 +177,29 @@ TEST(ProfileReaders, PairWithoutContactAtTheNominalPositionNamesBothFiles) {
   EXPECT_NE(e.find("nominal position"), std::string::npos) << e;
 }
 
+// The contact-geometry command reads its contact with the scene loader's
+// contact reader (load_scene_contacts): the shipped contact file reads, and
+// bad keys are named with their path and what was found.
 TEST(ProfileContactScene, ShippedCaseReadsAndBadKeysAreNamed) {
-  const ProfileContactSpec spec =
-      read_profile_contact(std::string(RAILSTAB_CASES_DIR) + "/s1002_uic60_contact.toml", "");
-  EXPECT_EQ(spec.name, "s1002_uic60");
-  EXPECT_DOUBLE_EQ(spec.parameters.track_gauge_m, 1.435);
-  EXPECT_NO_THROW(load_profile_pair(spec));
+  const std::vector<ContactSpec> contacts =
+      load_scene_contacts(std::string(RAILSTAB_CASES_DIR) + "/s1002_uic60_contact.toml");
+  ASSERT_EQ(contacts.size(), 1u);
+  EXPECT_EQ(contacts[0].name, "s1002_uic60");
+  EXPECT_DOUBLE_EQ(contacts[0].profile_source.placement.track_gauge_m, 1.435);
+  ASSERT_TRUE(contacts[0].profile_geometry);
+  EXPECT_GT(contacts[0].profile_geometry->table.slots(), 1);
   TempDir dir;
-  const std::string scene = dir.write(
-      "s.toml", "[contacts.a]\ngeometry = \"profiles\"\nwheel_profile = \"w.txt\"\n"
-                "rail_profile = \"r.prr\"\ntrack_gauge_m = \"wide\"\n");
-  const std::string e = error_of([&] { read_profile_contact(scene, ""); });
+  const std::string head = "[contacts.a]\ngeometry = \"profiles\"\nnormal = \"hertz\"\n"
+                           "tangential = \"kalker_hertz\"\n";
+  const std::string scene =
+      dir.write("s.toml", head + "wheel_profile = \"w.txt\"\nrail_profile = \"r.prr\"\n"
+                                 "track_gauge_m = \"wide\"\n");
+  const std::string e = error_of([&] { load_scene_contacts(scene); });
   EXPECT_NE(e.find("contacts.a.wheel_profile"), std::string::npos) << e;  // plain text needs _mm/_m
-  const std::string scene2 = dir.write(
-      "s2.toml", "[contacts.a]\ngeometry = \"profiles\"\nwheel_profile_mm = \"w.txt\"\n"
-                 "rail_profile = \"r.prr\"\ntrack_gauge_m = \"wide\"\n");
-  const std::string e2 = error_of([&] { read_profile_contact(scene2, ""); });
+  const std::string scene2 =
+      dir.write("s2.toml", head + "wheel_profile_mm = \"w.txt\"\nrail_profile = \"r.prr\"\n"
+                                  "track_gauge_m = \"wide\"\n");
+  const std::string e2 = error_of([&] { load_scene_contacts(scene2); });
   EXPECT_NE(e2.find("contacts.a.track_gauge_m"), std::string::npos) << e2;
-  EXPECT_NE(e2.find("\"wide\""), std::string::npos) << e2;
+  EXPECT_NE(e2.find("a number (m), got a string 'wide'"), std::string::npos) << e2;
 }

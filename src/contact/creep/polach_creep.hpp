@@ -34,8 +34,11 @@
 // same magnitude:
 //     Fx = -r f11 xi_x R,  Fy = -r f22 xi_y R + F_yS,
 //     R = F / |(r f11 xi_x, r f22 s_yC)| = (1/2) (k_A/(1 + k_A^2 eps^2) + atan(k_S eps)/eps)
-// which is Polach's exactly when c11 = c22 (then c_jj s_C = c11 s_C) and, for
-// c11 != c22, for pure longitudinal or pure lateral creepage.
+// which is Polach's exactly when c11 = c22 (then c_jj s_C = c11 s_C), or
+// xi_x = 0, or s_yC = xi_y (no spin correction active); otherwise (c11 !=
+// c22 with longitudinal creepage and the spin switch active, e.g. pure
+// longitudinal creepage plus spin) the magnitude differs from Polach's
+// c_jj s_C weighting (review 2026-11-30).
 // Spin moment: not part of Polach's method. Mz = r (f23 xi_y - f33 phi) R/R0,
 // R0 = R(0) = (k_A + k_S)/2: Kalker's moment with the saturation of the
 // force, normalised so that its slope at zero creepage is Kalker's (a choice
@@ -73,8 +76,15 @@ template <class S> struct PolachCreep {
 
   // Defaults: the parameter set Polach 2005 recommends for dry rail
   // (k_A = 1.00, k_S = 0.40, mu0 = 0.55, A = 0.40, B = 0.60 s/m; for wet rail
-  // 0.30, 0.10, 0.30, 0.40, 0.20 s/m). Values as widely cited from the paper;
-  // check them against its table before quoting results.
+  // 0.30, 0.10, 0.30, 0.40, 0.20 s/m). Values as widely cited from the paper
+  // (the table itself not at hand; a review found them consistent with
+  // secondary sources: Open Rails' PolachCalculator fits k_A = 2.8 mu - 0.54,
+  // k_S = 1.2 mu - 0.26, B = 1.6 mu - 0.28, A = 0.4, which give exactly these
+  // sets at mu0 = 0.55 and 0.30). The set belongs together: changing only
+  // friction_coefficient (e.g. to 0.3) keeps the dry k_A, k_S, B, a mix not
+  // in Polach's table. kalker_reduction_factor < 1 reduces the initial slope
+  // on top of k_A, k_S (twice); Polach's method has only k_A, k_S for that.
+  // A, k_A, k_S and the reduction factor are dimensionless.
   S friction_coefficient{0.55};            // mu0, at zero slip velocity; > 0
   S limit_friction_ratio{0.40};            // A = mu_inf / mu0, in (0, 1]; 1: constant mu
   S friction_decrease_rate_s_per_m{0.60};  // B, >= 0
