@@ -3,6 +3,8 @@
 #include "contact_geometry/contact_geometry_summary.hpp"
 #include "io/gnuplot.hpp"
 #include "contact_geometry/profile_contact_geometry.hpp"
+#include "io/file_names.hpp"
+#include "io/output_set.hpp"
 #include "io/scene_loader.hpp"
 #include "report/contact_geometry_report.hpp"
 
@@ -10,6 +12,7 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <sstream>
 
 namespace railstab {
 namespace {
@@ -54,25 +57,27 @@ void run_contact_geometry(const ContactGeometryArgs& a) {
   const ContactSpec& spec = chosen_profile_contact(contacts, a);
   const ProfilePair& pair = spec.profile_geometry->pair;
   const ContactGeometrySummary summary = summarise_contact_geometry(pair);
-  std::filesystem::create_directories(a.out_dir);
   const std::string scene_name = std::filesystem::path(a.scene).stem().string();
-  const std::string prefix =
-      (std::filesystem::path(a.out_dir) / (scene_name + "_" + spec.name)).string();
-  const ContactGeometryFiles files =
-      write_contact_geometry_report(pair, summary, scene_name, spec.name, prefix, a.plots);
-  std::cout << std::setprecision(4) << scene_name << " / " << spec.name << ": "
-            << pair.wheel.source << " on " << pair.rail.source << "\n"
-            << "  equivalent conicity (EN 15302) at 3 mm: " << summary.equivalent_conicity_at_3mm
-            << "\n";
+  // All files or none (io/output_set.hpp), names made safe (io/file_names.hpp).
+  OutputSet outputs(a.out_dir);
+  write_contact_geometry_report(pair, summary, scene_name, spec.name, outputs,
+                                file_stem(scene_name + "_" + spec.name), a.plots);
+  std::ostringstream shown;
+  shown << std::setprecision(4) << scene_name << " / " << spec.name << ": "
+        << pair.wheel.source << " on " << pair.rail.source << "\n"
+        << "  equivalent conicity (EN 15302) at 3 mm: " << summary.equivalent_conicity_at_3mm
+        << "\n";
   if (summary.flange.found)
-    std::cout << "  flange contact at a lateral shift of " << summary.flange.lateral_shift_m * 1e3
-              << " mm (contact angle " << summary.flange.tread_contact_angle_rad << " -> "
-              << summary.flange.flange_contact_angle_rad << " rad)\n";
+    shown << "  flange contact at a lateral shift of " << summary.flange.lateral_shift_m * 1e3
+          << " mm (contact angle " << summary.flange.tread_contact_angle_rad << " -> "
+          << summary.flange.flange_contact_angle_rad << " rad)\n";
   else
-    std::cout << "  no flange contact up to 14 mm lateral shift\n";
-  std::cout << "wrote " << files.characteristic_csv << "\nwrote " << files.conicity_csv
-            << "\nwrote " << files.json << "\n";
-  for (const std::string& png : files.plots) std::cout << "wrote " << png << "\n";
+    shown << "  no flange contact up to 14 mm lateral shift\n";
+  const std::vector<std::string> written = outputs.commit();
+  std::cout << shown.str();
+  for (const std::string& f : written)
+    if (f.ends_with(".csv") || f.ends_with(".json") || f.ends_with(".png"))
+      std::cout << "wrote " << f << "\n";
 }
 
 }  // namespace

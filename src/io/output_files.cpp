@@ -16,30 +16,6 @@
 
 namespace railstab {
 
-void write_file_atomically(const std::string& path,
-                           const std::function<void(std::ostream&)>& write) {
-  const std::filesystem::path target(path);
-  if (target.has_parent_path()) std::filesystem::create_directories(target.parent_path());
-  const std::string tmp = path + ".partial";
-  {
-    std::ofstream out(tmp);
-    if (!out) throw std::runtime_error("cannot write " + tmp);
-    try {
-      write(out);
-    } catch (...) {
-      out.close();
-      std::remove(tmp.c_str());
-      throw;
-    }
-    out.flush();
-    if (!out) {
-      std::remove(tmp.c_str());
-      throw std::runtime_error("error while writing " + path);
-    }
-  }
-  std::filesystem::rename(tmp, target);
-}
-
 std::string trajectory_csv_header(const Model& model) {
   std::string header = "time_s";
   for (const Body& b : model.bodies)

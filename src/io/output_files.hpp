@@ -10,11 +10,6 @@
 
 namespace railstab {
 
-// One file written to a temporary name and renamed into place (used by the
-// contact-geometry report, which does not stage its set in an OutputSet yet).
-void write_file_atomically(const std::string& path,
-                           const std::function<void(std::ostream&)>& write);
-
 // The CSV header rows below: names quoted per RFC 4180 (io/csv.hpp), so a
 // header may span more than one physical line (csv_physical_lines).
 std::string trajectory_csv_header(const Model& model);

@@ -2,11 +2,12 @@
 
 #include "contact_geometry/wheelset_pose.hpp"
 #include "io/json_writer.hpp"
-#include "io/output_files.hpp"
-#include "report/gnuplot_runner.hpp"
+#include "io/gnuplot.hpp"
+#include "io/output_set.hpp"
 
 #include <cmath>
 #include <iomanip>
+#include <sstream>
 #include <stdexcept>
 
 namespace railstab {
@@ -40,18 +41,26 @@ void write_contact(Csv& c, const ContactPoint* p) {
 
 }  // namespace
 
-ContactGeometryFiles write_contact_geometry_report(const ProfilePair& pair,
-                                                   const ContactGeometrySummary& s,
-                                                   const std::string& scene_name,
-                                                   const std::string& contact_name,
-                                                   const std::string& prefix,
-                                                   bool plots) {
-  ContactGeometryFiles files;
-  files.characteristic_csv = prefix + "_characteristic.csv";
-  files.conicity_csv = prefix + "_conicity.csv";
-  files.json = prefix + ".json";
+void write_contact_geometry_report(const ProfilePair& pair, const ContactGeometrySummary& s,
+                                   const std::string& scene_name, const std::string& contact_name,
+                                   OutputSet& outputs, const std::string& stem, bool plots) {
+  struct {
+    std::string characteristic_csv, conicity_csv, json;
+  } files;
+  files.characteristic_csv = stem + "_characteristic.csv";
+  files.conicity_csv = stem + "_conicity.csv";
+  files.json = stem + ".json";
+  const std::string profiles_dat = stem + "_profiles.dat";
+  const std::string png_profiles = stem + "_profiles.png";
+  const std::string png_delta_r = stem + "_delta_r.png";
+  const std::string png_conicity = stem + "_conicity.png";
+  const std::string script = stem + "_plots.gp";
+  // A run without plots removes an earlier run's plots of these names, so
+  // old plots never sit beside new data.
+  for (const std::string& f : {profiles_dat, png_profiles, png_delta_r, png_conicity, script})
+    outputs.replaces(f);
 
-  write_file_atomically(files.characteristic_csv, [&](std::ostream& out) {
+  outputs.write(files.characteristic_csv, [&](std::ostream& out) {
     out << std::setprecision(10);
     out << "y_m,delta_r_m,roll_rad,vertical_m,contact_angle_left_rad,contact_angle_right_rad,"
            "rolling_radius_left_m,rolling_radius_right_m,contact_y_rail_left_m,"
@@ -74,7 +83,7 @@ ContactGeometryFiles write_contact_geometry_report(const ProfilePair& pair,
       c.end();
     }
   });
-  write_file_atomically(files.conicity_csv, [&](std::ostream& out) {
+  outputs.write(files.conicity_csv, [&](std::ostream& out) {
     out << std::setprecision(10) << "amplitude_m,wavelength_m,equivalent_conicity\n";
     Csv c{out};
     for (const ConicityPoint& p : s.conicity) {
@@ -82,7 +91,7 @@ ContactGeometryFiles write_contact_geometry_report(const ProfilePair& pair,
       c.end();
     }
   });
-  write_file_atomically(files.json, [&](std::ostream& out) {
+  outputs.write(files.json, [&](std::ostream& out) {
     JsonWriter j(out);
     const ProfilePairParameters& p = pair.parameters;
     j.begin_object()
@@ -113,13 +122,12 @@ ContactGeometryFiles write_contact_geometry_report(const ProfilePair& pair,
     j.end_array().end_object();
   });
 
-  if (!plots) return files;
+  if (!plots) return;
 
   // Plot data: the left rail and the centred left wheel in the track frame
   // (mm), and one line per lateral shift from the rail contact point to the
   // wheel point that touches it (drawn on the centred wheel).
-  const std::string profiles_dat = prefix + "_profiles.dat";
-  write_file_atomically(profiles_dat, [&](std::ostream& out) {
+  outputs.write(profiles_dat, [&](std::ostream& out) {
     out << std::setprecision(8) << "# left rail (track frame, mm)\n";
     for (size_t i = 0; i < pair.rail.y_m.size(); ++i)
       out << (pair.rail_offset_y_m + pair.rail.y_m[i]) * 1e3 << ' '
@@ -154,36 +162,41 @@ ContactGeometryFiles write_contact_geometry_report(const ProfilePair& pair,
       }
     }
   });
+  // Names and titles as gnuplot string literals (a quote in a scene or
+  // contact name cannot end the string and run commands); gnuplot runs in
+  // the staging folder, where these files are.
   const std::string title = scene_name + " / " + contact_name;
-  const std::string png_profiles = prefix + "_profiles.png";
-  const std::string png_delta_r = prefix + "_delta_r.png";
-  const std::string png_conicity = prefix + "_conicity.png";
-  const std::string script = prefix + "_plots.gp";
-  write_file_atomically(script, [&](std::ostream& gp) {
+  auto text = [](const std::string& t) { return gnuplot_text(t); };
+  auto path = [](const std::string& f) { return gnuplot_path(f); };
+  std::ostringstream conicity_at_3mm;
+  conicity_at_3mm << s.equivalent_conicity_at_3mm;
+  outputs.write(script, [&](std::ostream& gp) {
     gp << "set terminal pngcairo size 1000,620 font 'Sans,10' noenhanced\nset grid\n"
-       << "set output '" << png_profiles << "'\n"
-       << "set title '" << title << ": left wheel (centred) on its rail; lines join the rail "
-          "and wheel contact points for shifts -10..10 mm (every 0.5 mm)'\n"
-       << "set xlabel 'y, track frame [mm]'\nset ylabel 'z [mm]'\nset size ratio -1\n"
-       << "plot '" << profiles_dat << "' index 0 with lines lw 2 title 'rail', '" << profiles_dat
-       << "' index 1 with lines lw 2 title 'wheel', '" << profiles_dat
-       << "' index 2 with lines lc rgb 'gray40' title 'contact points'\n"
+       << "set output " << path(png_profiles) << "\n"
+       << "set title " << text(title + ": left wheel (centred) on its rail; lines join the rail "
+                               "and wheel contact points for shifts -10..10 mm (every 0.5 mm)")
+       << "\nset xlabel 'y, track frame [mm]'\nset ylabel 'z [mm]'\nset size ratio -1\n"
+       << "plot " << path(profiles_dat) << " index 0 with lines lw 2 title 'rail', "
+       << path(profiles_dat) << " index 1 with lines lw 2 title 'wheel', " << path(profiles_dat)
+       << " index 2 with lines lc rgb 'gray40' title 'contact points'\n"
        << "set size noratio\nset datafile separator ','\n"
-       << "set output '" << png_delta_r << "'\n"
-       << "set title '" << title << ": rolling-radius difference (rigid contact)'\n"
+       << "set output " << path(png_delta_r) << "\n"
+       << "set title " << text(title + ": rolling-radius difference (rigid contact)") << "\n"
        << "set xlabel 'lateral shift y [mm]'\nset ylabel 'delta r = r_left - r_right [mm]'\n"
-       << "plot '" << files.characteristic_csv
-       << "' skip 1 using ($1*1e3):($2*1e3) with lines lw 2 title 'delta r'\n"
-       << "set output '" << png_conicity << "'\n"
-       << "set title '" << title << ": equivalent conicity (EN 15302, Klingel integration); "
-       << "at 3 mm: " << s.equivalent_conicity_at_3mm << "'\n"
-       << "set xlabel 'amplitude [mm]'\nset ylabel 'equivalent conicity tan(gamma_e)'\n"
-       << "plot '" << files.conicity_csv
-       << "' skip 1 using ($1*1e3):3 with linespoints lw 2 title 'equivalent conicity'\n";
+       << "plot " << path(files.characteristic_csv)
+       << " skip 1 using ($1*1e3):($2*1e3) with lines lw 2 title 'delta r'\n"
+       << "set output " << path(png_conicity) << "\n"
+       << "set title "
+       << text(title + ": equivalent conicity (EN 15302, Klingel integration); at 3 mm: " +
+               conicity_at_3mm.str())
+       << "\nset xlabel 'amplitude [mm]'\nset ylabel 'equivalent conicity tan(gamma_e)'\n"
+       << "plot " << path(files.conicity_csv)
+       << " skip 1 using ($1*1e3):3 with linespoints lw 2 title 'equivalent conicity'\n"
+       << "unset output\n";
   });
-  files.plots = {png_profiles, png_delta_r, png_conicity};
-  run_gnuplot_script(script, files.plots);
-  return files;
+  const std::vector<std::string> pngs = {png_profiles, png_delta_r, png_conicity};
+  for (const std::string& f : pngs) outputs.add(f);
+  run_gnuplot(script, outputs.staging_dir(), pngs);
 }
 
 }  // namespace railstab

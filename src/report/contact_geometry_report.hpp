@@ -8,21 +8,18 @@
 
 namespace railstab {
 
-struct ContactGeometryFiles {
-  std::string characteristic_csv, conicity_csv, json;
-  std::vector<std::string> plots;
-};
+class OutputSet;
 
-// Writes <prefix>_characteristic.csv, <prefix>_conicity.csv, <prefix>.json and
-// <prefix>_{profiles,delta_r,conicity}.png (each file whole or not at all;
-// a non-finite number is an error). `labels` name the scene and contact in
-// titles and JSON. With plots = false no plot data, script or PNG is
-// written and gnuplot is not run (files.plots stays empty).
-ContactGeometryFiles write_contact_geometry_report(const ProfilePair& pair,
-                                                   const ContactGeometrySummary& summary,
-                                                   const std::string& scene_name,
-                                                   const std::string& contact_name,
-                                                   const std::string& prefix,
-                                                   bool plots = true);
+// Writes, through `outputs` (all or nothing, committed by the caller),
+// <stem>_characteristic.csv, <stem>_conicity.csv, <stem>.json and, with
+// plots, <stem>_{profiles,delta_r,conicity}.png with their data and script
+// (gnuplot without a shell, in the staging folder; every plot checked).
+// A non-finite number is an error. `scene_name`, `contact_name` name the
+// scene and contact in titles and JSON (any text: quoted for gnuplot).
+// With plots = false gnuplot is not run and an earlier run's plots of the
+// same names are removed at commit.
+void write_contact_geometry_report(const ProfilePair& pair, const ContactGeometrySummary& summary,
+                                   const std::string& scene_name, const std::string& contact_name,
+                                   OutputSet& outputs, const std::string& stem, bool plots = true);
 
 }  // namespace railstab

@@ -72,3 +72,43 @@ TEST(CliContactGeometry, SceneAndContactFileGiveTheSameConicityAndBadChoicesAreN
   EXPECT_FALSE(fs::exists(dir / "d"));
   fs::remove_all(dir);
 }
+
+// A scene file whose name holds a quote and a gnuplot command: the plots
+// are made (the name is a string literal in the script, nothing runs), the
+// files land in --out under a safe name; a re-run with --no-plots removes
+// the earlier plots so old plots never sit beside new data.
+TEST(CliContactGeometry, HostileSceneNameIsQuotedAndStalePlotsAreRemoved) {
+  const fs::path dir = fresh_dir("hostile");
+  const std::string cases = RAILSTAB_CASES_DIR;
+  // The contact file next to its profiles, under a hostile name.
+  fs::create_directories(dir / "in/profiles");
+  for (const char* f : {"MBench_S1002_v3.prw", "MBench_UIC60_v3.prr"})
+    fs::copy_file(cases + "/profiles/" + f, dir / "in/profiles" / f);
+  // Unquoted, gnuplot would read: set title 'x'; system "touch pwned"; print '...'
+  const std::string hostile = "x'; system \"touch pwned\"; print '.toml";
+  fs::copy_file(cases + "/s1002_uic60_contact.toml", dir / "in" / hostile);
+  const auto run = run_railstab({"contact-geometry", "in/" + hostile, "--out", "o"}, dir);
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_FALSE(fs::exists(dir / "pwned"));
+  EXPECT_FALSE(fs::exists(dir / "in/pwned"));
+  EXPECT_FALSE(fs::exists(dir / "o/pwned"));
+  int pngs = 0;
+  std::string png_name;
+  for (const auto& e : fs::directory_iterator(dir / "o"))
+    if (e.path().extension() == ".png") {
+      ++pngs;
+      png_name = e.path().filename().string();
+      EXPECT_GT(fs::file_size(e.path()), 1000u) << e.path();
+    }
+  EXPECT_EQ(pngs, 3);
+  EXPECT_EQ(png_name.find('\''), std::string::npos) << png_name;
+
+  const auto again = run_railstab({"contact-geometry", "in/" + hostile, "--out", "o", "--no-plots"},
+                                  dir);
+  ASSERT_EQ(again.exit_code, 0) << again.output;
+  int left = 0;
+  for (const auto& e : fs::directory_iterator(dir / "o"))
+    if (e.path().extension() == ".png" || e.path().extension() == ".gp") ++left;
+  EXPECT_EQ(left, 0);
+  fs::remove_all(dir);
+}
