@@ -16,7 +16,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 fuzz_seconds=${RAILSTAB_FUZZ_SECONDS:-30}
-long_runs='ContactDamping\.VerifyInTheArc|ThesisBogie\.ShiftsOutwardsInCurve|ExtremeConservative|Extreme/ExtremeRun|Verification\.|ErrorEstimate\.|ExtremeNearCritical'
+long_runs='SteadyCurvingProfiles\.EquilibriumIsWhere|ContactDamping\.VerifyInTheArc|ThesisBogie\.ShiftsOutwardsInCurve|ExtremeConservative|Extreme/ExtremeRun|Verification\.|ErrorEstimate\.|ExtremeNearCritical'
 timed='ContactTables\.BuildTakesUnderOneSecond|SundialsFlagNames|WorkLimits'
 # Packaging tests (the example program, install + find_package): about the
 # Release build's install tree, not about memory errors; the Release suite

@@ -101,3 +101,26 @@ TEST(Verification, FromTheSceneOffsetsMeetsTheTargets) {
     EXPECT_EQ(r.fitted_real_per_s > 0.0, v > 36.9) << v;
   }
 }
+
+// The thesis bogie on S1002/UIC60 (cases/thesis_bogie_s1002_tangent.toml,
+// critical speed 39.80 m/s) at 20 and 25 m/s, started along the hunting mode
+// with 0.01 mm: the time domain decays as the eigenvalue says (measured
+// 0.32 % / 0.56 % in the real part, 0.10 % / 0.18 % in the frequency). The
+// linear range of this profile pair is small: the contact jumps at a lateral
+// shift of 0.25 mm, so the default 0.1 mm start is already nonlinear (8 % at
+// 30 m/s), and closer to the critical speed the agreement degrades even at
+// 0.01 mm (2.4 % at 33 m/s, 8 % at 36 m/s with a fit residual of 0.11: not
+// understood yet, README "Real wheel and rail profiles").
+TEST(Verification, ProfileBogieMatchesEigenvalueInItsLinearRange) {
+  for (double v : {20.0, 25.0}) {
+    const PreparedScene s = prepare_scene(std::string(RAILSTAB_CASES_DIR) +
+                                              "/thesis_bogie_s1002_tangent.toml", {v, {}, {}});
+    VerificationOptions o;
+    o.amplitude_m = 1e-5;
+    const VerificationResult r =
+        verify_least_stable_mode(s.model, s.model.scene_speed_m_per_s, s.equilibrium.state, o);
+    EXPECT_LT(r.frequency_difference_relative, 0.005) << v;
+    EXPECT_LT(r.real_difference_relative, 0.02) << v;
+    EXPECT_LT(r.fitted_real_per_s, 0.0) << v;
+  }
+}
