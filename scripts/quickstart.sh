@@ -8,4 +8,4 @@ bash scripts/install_deps.sh
 bash scripts/build.sh
 ./build/railstab critical-speed cases/thesis_vehicle_tangent.toml --out out
 ./build/railstab critical-speed cases/thesis_vehicle_curve.toml --arc-length 2000 --out out
-echo "reports: out/thesis_vehicle_tangent_critical_speed.md out/thesis_vehicle_curve_critical_speed.md"
+echo "reports: out/thesis_vehicle_tangent_critical_speed.md out/thesis_vehicle_curve_arc2000m_critical_speed.md"

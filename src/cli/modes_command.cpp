@@ -1,6 +1,7 @@
 #include "cli/modes_command.hpp"
 
 #include "cli/model_warnings.hpp"
+#include "report/run_conditions.hpp"
 #include "cli/numeric_flags.hpp"
 #include "io/file_names.hpp"
 #include "io/gnuplot.hpp"
@@ -56,7 +57,7 @@ void run_modes(const ModesArgs& a) {
                                  : std::string(" whose name contains a --mode text")));
   if (int(chosen.size()) > a.count) chosen.resize(size_t(a.count));
   OutputSet outputs(a.out_dir);
-  write_mode_plots(s.model, p, chosen, outputs, file_stem(s.model.name));
+  write_mode_plots(s.model, p, chosen, outputs, steady_state_file_stem(s.model));
   std::cout << s.model.name << " at " << p.speed_m_per_s << " m/s, modes drawn:\n";
   for (int i : chosen) {
     const ModeReport& m = p.modes[size_t(i)];

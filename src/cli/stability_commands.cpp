@@ -1,6 +1,7 @@
 #include "cli/stability_commands.hpp"
 
 #include "cli/model_warnings.hpp"
+#include "report/run_conditions.hpp"
 #include "cli/numeric_flags.hpp"
 #include "setup/prepare_scene.hpp"
 #include "io/file_names.hpp"
@@ -59,8 +60,10 @@ StabilityOptions stability_options(const CommonArgs& a) {
 }
 
 // Output names start with the scene name made safe (io/file_names.hpp), so
-// a scene called "../evil" still writes inside --out.
-std::string stem_for(const Model& m) { return file_stem(m.name); }
+// a scene called "../evil" still writes inside --out, and a run in a curve
+// carries its arc length (report/run_conditions.hpp): it never overwrites
+// the tangent run's files.
+std::string stem_for(const Model& m) { return steady_state_file_stem(m); }
 
 // --- equilibrium ---------------------------------------------------------------
 void run_equilibrium(const CommonArgs& a) {

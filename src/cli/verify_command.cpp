@@ -1,6 +1,7 @@
 #include "cli/verify_command.hpp"
 
 #include "cli/model_warnings.hpp"
+#include "report/run_conditions.hpp"
 #include "cli/numeric_flags.hpp"
 #include "setup/prepare_scene.hpp"
 #include "io/file_names.hpp"
@@ -44,7 +45,7 @@ void run_verify(const VerifyArgs& a) {
   if (a.scene_offsets) options.initial_state = perturbed_initial_state(s);
   const VerificationResult r = verify_least_stable_mode(s.model, s.speed_m_per_s, s.equilibrium.state, options);
   const std::string stem =
-      file_stem(s.model.name) + "_verify_" + speed_file_tag(r.speed_m_per_s);
+      steady_state_file_stem(s.model) + "_verify_" + speed_file_tag(r.speed_m_per_s);
   OutputSet outputs(a.out_dir);
   for (const std::string& name : verification_plot_file_names(stem)) outputs.replaces(name);
   auto json_writer = [&](std::ostream& out) { write_verification_json(out, s.model, r); };

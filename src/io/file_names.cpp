@@ -29,7 +29,16 @@ std::string speed_file_tag(double speed_m_per_s) {
   if (!std::isfinite(speed_m_per_s) || std::abs(speed_m_per_s) > 1e6)
     throw std::invalid_argument("speed " + std::to_string(speed_m_per_s) +
                                 " m/s: expected a finite speed to name the output files");
-  return std::to_string(std::lround(speed_m_per_s)) + "mps";
+  // Two decimals, trailing zeros dropped: 30 -> "30mps", 36.9 -> "36.9mps",
+  // 36.904 -> "36.9mps", 12.346 -> "12.35mps" (runs 0.01 m/s apart differ).
+  const long hundredths = std::lround(speed_m_per_s * 100.0);
+  std::string tag = std::to_string(hundredths / 100);
+  const long frac = std::labs(hundredths % 100);
+  if (frac != 0) {
+    tag += "." + std::to_string(frac / 10);
+    if (frac % 10 != 0) tag += std::to_string(frac % 10);
+  }
+  return tag + "mps";
 }
 
 bool is_safe_file_name(std::string_view file_name) {

@@ -21,8 +21,8 @@ inline constexpr std::size_t kMaxFileStemLength = 80;
 
 std::string file_stem(std::string_view name);
 
-// "<V>mps" with V the speed rounded to whole m/s (e.g. "37mps"), for names
-// like <stem>_eigen_37mps.json; throws std::invalid_argument for a
+// "<V>mps" with V the speed rounded to 0.01 m/s, trailing zeros dropped
+// ("30mps", "36.9mps", "12.35mps"), for names like <stem>_eigen_36.9mps.json; throws std::invalid_argument for a
 // non-finite speed or one beyond 1e6 m/s.
 std::string speed_file_tag(double speed_m_per_s);
 

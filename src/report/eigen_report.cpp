@@ -3,6 +3,7 @@
 #include "io/file_names.hpp"
 #include "io/json_writer.hpp"
 #include "report/mode_shape_report.hpp"
+#include "report/run_conditions.hpp"
 
 #include <iomanip>
 
@@ -14,6 +15,7 @@ void write_eigen_json(const Model& model, const StabilityPoint& p, OutputSet& ou
                 [&](std::ostream& out) {
     JsonWriter j(out);
     j.begin_object().field("scene", model.name).field("speed_m_s", p.speed_m_per_s);
+    write_conditions_json(j, run_conditions(model), {p.speed_m_per_s});
     j.field("eigen_solver", eigen_solver_name(p.solver_used)).field("states", int(p.linear.A.rows()));
     j.key("removed_cyclic_states").begin_array();
     for (const std::string& r : p.linear.removed_states) j.value(r);

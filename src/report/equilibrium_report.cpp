@@ -4,6 +4,7 @@
 
 #include "io/json_writer.hpp"
 #include "model/equations_of_motion.hpp"
+#include "report/run_conditions.hpp"
 
 #include <cmath>
 #include <iomanip>
@@ -49,6 +50,7 @@ std::string write_equilibrium_results(const PreparedScene& s, OutputSet& outputs
   outputs.write(stem + "_equilibrium.json", [&](std::ostream& out) {
     JsonWriter j(out);
     j.begin_object().field("scene", model.name).field("speed_m_s", s.speed_m_per_s);
+    write_conditions_json(j, run_conditions(model), {s.speed_m_per_s});
     j.field("newton_iterations", s.equilibrium.iterations)
         .field("pseudo_transient_steps", s.equilibrium.pseudo_transient_steps)
         .field("max_acceleration_residual", s.equilibrium.max_acceleration);

@@ -1,5 +1,7 @@
 #include "report/stability_report.hpp"
 
+#include "report/run_conditions.hpp"
+
 #include "io/csv.hpp"
 #include "io/gnuplot.hpp"
 #include "io/json_writer.hpp"
@@ -282,6 +284,16 @@ void write_json(std::ostream& out, const Model& model, const CriticalSpeedResult
   {
     JsonWriter j(out);
     j.begin_object().field("scene", model.name).field("source", model.source_path);
+    // Where and how (report/run_conditions.hpp): track, cant deficiency at
+    // every speed of the grid, contacts, scene hash, version; the solver and
+    // the tolerances of the search.
+    std::vector<double> speeds;
+    for (const StabilityPoint& p : r.grid) speeds.push_back(p.speed_m_per_s);
+    write_conditions_json(j, run_conditions(model), speeds);
+    j.field("eigen_solver", solver)
+        .field("hunting_band_hz", max_hz)
+        .field("speed_tolerance_requested_m_s", r.requested_tolerance_m_per_s)
+        .field("equilibrium_acceleration_tolerance_m_s2", EquilibriumOptions{}.acceleration_tolerance);
     j.key("speed_range_m_s").begin_array().value(r.from_m_per_s).value(r.to_m_per_s).end_array();
     j.field("partial", r.partial);
     if (r.partial)
@@ -388,7 +400,10 @@ void write_markdown(std::ostream& md_out, const Model& model, const CriticalSpee
        << "Scene `" << md_text(model.source_path) << "`, speeds " << r.from_m_per_s << " to "
        << r.to_m_per_s << " m/s, " << (r.grid.empty() ? 0 : r.grid.front().linear.A.rows())
        << " states after removing " << (r.grid.empty() ? 0 : r.grid.front().linear.removed_states.size())
-       << " cyclic coordinates, eigen-solver " << solver << ".\n\n";
+       << " cyclic coordinates, eigen-solver " << solver << ", speeds bracketed to "
+       << r.requested_tolerance_m_per_s << " m/s, steady states to "
+       << EquilibriumOptions{}.acceleration_tolerance << " m/s^2.\n\n"
+       << conditions_markdown(run_conditions(model)) << "\n";
     if (r.partial)
       md << "**Partial result**: the run could not finish what was asked; what it found is "
             "below. Reason: "
@@ -446,14 +461,21 @@ void write_markdown(std::ostream& md_out, const Model& model, const CriticalSpee
            << " 1/s (wheel-rail contact mode; the Hertz contact has no damping)\n";
         break;
       }
+    // In a curve, the cant deficiency at each speed (report/run_conditions.hpp).
+    const RunConditions conditions = run_conditions(model);
+    const bool curve = !conditions.tangent;
     md << "\nLeast damped mode by speed (smallest damping ratio in the hunting band):\n\n"
-          "| speed [m/s] | real part [1/s] | frequency [Hz] | damping ratio | mode |\n"
-          "|---|---|---|---|---|\n";
+          "| speed [m/s] | "
+       << (curve ? "cant deficiency [mm] | " : "")
+       << "real part [1/s] | frequency [Hz] | damping ratio | mode |\n"
+       << (curve ? "|---|---|---|---|---|---|\n" : "|---|---|---|---|---|\n");
     for (const StabilityPoint& p : r.grid) {
       if (p.least_damped < 0) continue;
       const ModeReport& m = p.modes[size_t(p.least_damped)];
-      md << "| " << p.speed_m_per_s << " | " << m.eigenvalue.real() << " | " << m.frequency_hz
-         << " | " << m.damping_ratio << " | " << md_text(m.name) << " |\n";
+      md << "| " << p.speed_m_per_s << " | ";
+      if (curve) md << conditions.cant_deficiency_m(p.speed_m_per_s) * 1e3 << " | ";
+      md << m.eigenvalue.real() << " | " << m.frequency_hz << " | " << m.damping_ratio << " | "
+         << md_text(m.name) << " |\n";
     }
     md << "\n";
     for (const std::string& png : files.plots) md << "![](" << rel(png) << ")\n\n";

@@ -243,6 +243,7 @@ CriticalSpeedResult find_critical_speed(const Model& model, const Eigen::VectorX
   r.from_m_per_s = options.from_m_per_s;
   r.to_m_per_s = options.to_m_per_s;
   r.speed_tolerance_m_per_s = options.tolerance_m_per_s;
+  r.requested_tolerance_m_per_s = options.tolerance_m_per_s;
   SpeedStability stability(model, equilibrium_guess, guess_speed_m_per_s, options.stability);
   auto report = [&](const StabilityPoint& p) {
     ++r.evaluations;

@@ -87,7 +87,8 @@ struct CriticalSpeedResult {
   bool unstable_at_start = false;    // already unstable at the lowest speed
   bool critical_speed_found = false; // a crossing was bracketed and refined
   double critical_speed_m_per_s = 0.0;
-  double speed_tolerance_m_per_s = 0.0;
+  double speed_tolerance_m_per_s = 0.0;    // reached (wider where a bisection stopped)
+  double requested_tolerance_m_per_s = 0.0;  // CriticalSpeedOptions::tolerance_m_per_s
   StabilityPoint at_critical;        // the stable side of the final bracket
   // Damping-ratio criterion (CriticalSpeedOptions::min_damping_ratio): the
   // lowest speed where the least damped mode's ratio falls below the limit,

@@ -47,7 +47,7 @@ TEST(PartialResults, SweepThatLosesItsSteadyStateWritesWhatItFoundMarkedPartial)
       << run.output;
   EXPECT_NE(run.output.find("warning from 90 m/s: wheelset1 steady lateral shift"), std::string::npos)
       << run.output;
-  const std::string json = read_text(dir / "out/thesis_bogie_curve_critical_speed.json");
+  const std::string json = read_text(dir / "out/thesis_bogie_curve_arc2000m_critical_speed.json");
   EXPECT_TRUE(railstab::test::is_valid_json(json));
   EXPECT_NE(json.find("\"partial\": true"), std::string::npos) << json.substr(0, 600);
   EXPECT_NE(json.find("\"partial_reason\": \"the speed grid stopped at 100 m/s"), std::string::npos);
@@ -58,7 +58,7 @@ TEST(PartialResults, SweepThatLosesItsSteadyStateWritesWhatItFoundMarkedPartial)
   // What was found is there: the grid below 100 m/s and the critical speed
   // in the arc (39.6 m/s, bracketed by 30 and 40 m/s).
   EXPECT_NE(json.find("\"critical_speed_m_s\": 39.6"), std::string::npos) << json.substr(0, 900);
-  const std::string md = read_text(dir / "out/thesis_bogie_curve_critical_speed.md");
+  const std::string md = read_text(dir / "out/thesis_bogie_curve_arc2000m_critical_speed.md");
   EXPECT_NE(md.find("**Partial result**"), std::string::npos) << md.substr(0, 600);
   EXPECT_NE(md.find("| 90 |"), std::string::npos);
   EXPECT_EQ(md.find("| 100 |"), std::string::npos);
@@ -69,7 +69,7 @@ TEST(PartialResults, SweepThatLosesItsSteadyStateWritesWhatItFoundMarkedPartial)
                                       "out2"},
                                      dir);
   ASSERT_EQ(complete.exit_code, 0) << complete.output;
-  const std::string json2 = read_text(dir / "out2/thesis_bogie_curve_critical_speed.json");
+  const std::string json2 = read_text(dir / "out2/thesis_bogie_curve_arc2000m_critical_speed.json");
   EXPECT_NE(json2.find("\"partial\": false"), std::string::npos) << json2.substr(0, 600);
   EXPECT_NE(json2.find("\"partial_reason\": null"), std::string::npos);
   fs::remove_all(dir);

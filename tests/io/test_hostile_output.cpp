@@ -200,7 +200,12 @@ TEST(HostileFileNames, StemsAreSingleSafeComponentsOfBoundedLength) {
   EXPECT_EQ(file_stem(std::string(4000, 'x')).size(), kMaxFileStemLength);
   EXPECT_FALSE(is_safe_file_name("../x"));
   EXPECT_FALSE(is_safe_file_name(".hidden"));
-  EXPECT_EQ(speed_file_tag(36.9), "37mps");
+  EXPECT_EQ(speed_file_tag(36.9), "36.9mps");
+  EXPECT_EQ(speed_file_tag(30.0), "30mps");
+  EXPECT_EQ(speed_file_tag(36.904), "36.9mps");
+  EXPECT_EQ(speed_file_tag(12.346), "12.35mps");
+  EXPECT_EQ(speed_file_tag(0.05), "0.05mps");
+  EXPECT_EQ(speed_file_tag(7.0999), "7.1mps");
   EXPECT_THROW(speed_file_tag(std::nan("")), std::invalid_argument);
   EXPECT_THROW(speed_file_tag(1e300), std::invalid_argument);
 }
