@@ -318,9 +318,9 @@ void write_json(std::ostream& out, const Model& model, const CriticalSpeedResult
       j.key("shape");
       write_mode_shape_json(j, model, shapes[size_t(r.at_critical.least_stable)]);
       j.end_object();
-      // Every oscillatory mode up to the plotted band at the stable side of
-      // the final bracket, with its shape: what a client compares the
-      // hunting mode with.
+      // Every oscillatory mode up to the plotted band at the critical speed
+      // (r.at_critical), with its shape: what a client compares the hunting
+      // mode with.
       j.field("modes_at_critical_speed_m_s", r.at_critical.speed_m_per_s);
       j.key("modes_at_critical_speed").begin_array();
       for (size_t i = 0; i < r.at_critical.modes.size(); ++i) {
@@ -442,7 +442,8 @@ void write_markdown(std::ostream& md_out, const Model& model, const CriticalSpee
          << " Hz |\n| wavelength | "
          << (m.frequency_hz > 0.0 ? r.critical_speed_m_per_s / m.frequency_hz : 0.0)
          << " m |\n"
-         << "| damping ratio at the stable side | " << m.damping_ratio << " |\n"
+         << "| damping ratio at " << r.at_critical.speed_m_per_s << " m/s | " << m.damping_ratio
+         << " |\n"
          << "| mode | " << md_text(m.name) << " |\n\n";
       write_mode_shape_markdown(
           md, model, full_mode_shapes(model, r.at_critical)[size_t(r.at_critical.least_stable)]);

@@ -300,7 +300,21 @@ CriticalSpeedResult find_critical_speed(const Model& model, const Eigen::VectorX
     r.speed_tolerance_m_per_s =
         std::max(options.tolerance_m_per_s, b.hi.speed_m_per_s - b.lo.speed_m_per_s);
     r.critical_speed_m_per_s = b.zero_m_per_s;
+    // The modes (hunting frequency, mode shape) at the critical speed itself,
+    // one more evaluation from the stable side's steady state; where that
+    // speed has none, the stable side of the bracket.
     r.at_critical = std::move(b.lo);
+    if (r.critical_speed_m_per_s > r.at_critical.speed_m_per_s &&
+        r.critical_speed_m_per_s < b.hi.speed_m_per_s) {
+      try {
+        SpeedStability at_zero(model, r.at_critical.equilibrium.state,
+                               r.at_critical.speed_m_per_s, options.stability);
+        StabilityPoint p = at_zero.at(r.critical_speed_m_per_s);
+        report(p);
+        if (p.least_stable >= 0) r.at_critical = std::move(p);
+      } catch (const std::runtime_error&) {
+      }
+    }
     r.critical_speed_found = true;
   }
   if (options.min_damping_ratio > 0.0) find_damping_limit(model, options, r, report);

@@ -89,7 +89,10 @@ struct CriticalSpeedResult {
   double critical_speed_m_per_s = 0.0;
   double speed_tolerance_m_per_s = 0.0;    // reached (wider where a bisection stopped)
   double requested_tolerance_m_per_s = 0.0;  // CriticalSpeedOptions::tolerance_m_per_s
-  StabilityPoint at_critical;        // the stable side of the final bracket
+  // At the critical speed itself (its least stable mode's real part ~0);
+  // the stable side of the final bracket where that speed has no steady
+  // state. at_critical.speed_m_per_s says which.
+  StabilityPoint at_critical;
   // Damping-ratio criterion (CriticalSpeedOptions::min_damping_ratio): the
   // lowest speed where the least damped mode's ratio falls below the limit,
   // bisected like the critical speed on (smallest ratio - limit).

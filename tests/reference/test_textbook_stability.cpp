@@ -23,6 +23,7 @@
 //    1x1/2x2/3x3 inverse); the TinyOffset variants show that it is the only
 //    difference from the closed form.
 #include "setup/prepare_scene.hpp"
+#include "stability/speed_analysis.hpp"
 #include "linear/jacobian.hpp"
 #include "model/equations_of_motion.hpp"
 #include "reference/textbook_models.hpp"
@@ -341,4 +342,32 @@ TEST_P(TextbookBogieOracle, CriticalSpeedAndFrequencyEqualClosedForm) {
   EXPECT_NEAR(rs->omega, w_closed, kOnsetTolerance * w_closed);
   RecordProperty("V_crit_m_per_s", std::to_string(rs->V));
   RecordProperty("f_crit_Hz", std::to_string(rs->omega / (2.0 * std::numbers::pi)));
+}
+
+// The critical-speed search reports the hunting frequency at the critical
+// speed itself (StabilityPoint at_critical, one more evaluation at the
+// interpolated zero), not at the stable end of the bracket: the textbook
+// wheelset's frequency equals the closed form (Routh-Hurwitz) to 1e-7, where
+// the stable end (0.01 m/s below) was 4e-5 off.
+TEST(TextbookWheelsetSearch, FrequencyAtTheCriticalSpeedItselfEqualsClosedForm) {
+  const PreparedScene s = prepare_scene(case_path("textbook_wheelset"), {});
+  const tb::RestrainedWheelset p = tb::restrained_wheelset_from_scene(s.spec);
+  const std::optional<tb::HuntingOnset> closed = tb::restrained_wheelset_critical(p);
+  ASSERT_TRUE(closed.has_value());
+  CriticalSpeedOptions o;
+  o.from_m_per_s = 5.0;
+  o.to_m_per_s = 150.0;
+  o.grid_step_m_per_s = 5.0;
+  o.tolerance_m_per_s = 0.01;
+  const CriticalSpeedResult r =
+      find_critical_speed(s.model, s.equilibrium.state, s.speed_m_per_s, o);
+  ASSERT_TRUE(r.critical_speed_found);
+  EXPECT_EQ(r.at_critical.speed_m_per_s, r.critical_speed_m_per_s);
+  const ModeReport& m = r.at_critical.modes[size_t(r.at_critical.least_stable)];
+  // The interpolated zero is within ~1e-6 m/s of the closed form for a
+  // 0.01 m/s bracket (real part linear in V to second order).
+  EXPECT_NEAR(r.critical_speed_m_per_s, closed->speed_m_per_s, 1e-5 * closed->speed_m_per_s);
+  EXPECT_NEAR(2.0 * std::numbers::pi * m.frequency_hz, closed->angular_frequency_rad_per_s,
+              1e-7 * closed->angular_frequency_rad_per_s);
+  EXPECT_NEAR(m.eigenvalue.real(), 0.0, 1e-6 * closed->angular_frequency_rad_per_s);
 }
