@@ -3,6 +3,8 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <stdexcept>
 
 namespace railstab {
@@ -59,7 +61,14 @@ VariedKey parse_varied_key(std::string_view text) {
     throw std::invalid_argument("expected TO = FROM + a whole number of STEPs in '" + whole +
                                 "' ((TO - FROM) / STEP = " + number_text_exact(steps) + ")");
   const size_t n = size_t(whole_steps) + 1;
-  for (size_t i = 0; i < n; ++i) v.values.push_back(i + 1 == n ? v.to : v.from + double(i) * v.step);
+  // Each value rounded to 12 significant digits: 0.05 + 0.01 is 0.06, not
+  // 0.060000000000000005 (what an engineer typed, in files and scenes).
+  for (size_t i = 0; i < n; ++i) {
+    const double exact = i + 1 == n ? v.to : v.from + double(i) * v.step;
+    char text[32];
+    std::snprintf(text, sizeof text, "%.12g", exact);
+    v.values.push_back(std::strtod(text, nullptr));
+  }
   return v;
 }
 

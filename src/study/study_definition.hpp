@@ -20,7 +20,7 @@ namespace railstab {
 struct VariedKey {
   std::string key;
   double from = 0.0, to = 0.0, step = 0.0;
-  std::vector<double> values;  // from, from + step, ..., to
+  std::vector<double> values;  // from, from + step, ..., to (to 12 significant digits)
 };
 
 // Bounds a typo (--vary k=0:1e9:1e-9) before anything is allocated.

@@ -16,6 +16,7 @@ TEST(StudyDefinition, RangesGiveTheirValuesAndEndExactlyAtTo) {
   EXPECT_EQ(v.values[0], 0.1);
   EXPECT_EQ(v.values[1], 0.1 + 0.1);
   EXPECT_EQ(v.values[2], 0.3);  // not 0.1 + 2 * 0.1 = 0.30000000000000004
+  EXPECT_EQ(parse_varied_key("k=0.05:0.14:0.01").values[1], 0.06);  // not 0.060000000000000005
   EXPECT_EQ(parse_varied_key("k=5:5:1").values, std::vector<double>{5.0});
   EXPECT_EQ(parse_varied_key("a.b[1]=1e5:5e5:1e5").values.size(), 5u);
   EXPECT_EQ(varied_key_text(v), "contacts.c.conicity=0.1:0.3:0.1");
