@@ -3,6 +3,7 @@
 #include "cli/check_command.hpp"
 #include "cli/contact_geometry_command.hpp"
 #include "cli/modes_command.hpp"
+#include "cli/sensitivity_command.hpp"
 #include "cli/simulate_command.hpp"
 #include "cli/stability_commands.hpp"
 #include "cli/study_command.hpp"
@@ -21,6 +22,7 @@ int main(int argc, char** argv) {
   railstab::register_simulate_command(app);
   railstab::register_stability_commands(app);
   railstab::register_study_commands(app);
+  railstab::register_sensitivity_command(app);
   railstab::register_modes_command(app);
   railstab::register_verify_command(app);
   railstab::register_work_precision_command(app);
