@@ -15,7 +15,7 @@ void add_set_flag(CLI::App* cmd, std::vector<SceneValueSetting>& values) {
           return e.what();
         }
       },
-      "KEY=VALUE");
+      "");  // the type name says the form
   cmd->add_option_function<std::vector<std::string>>(
          "--set",
          [&values](const std::vector<std::string>& texts) {

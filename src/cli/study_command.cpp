@@ -31,7 +31,8 @@ struct StudyArgs {
 };
 
 // A validator from a parser that throws std::invalid_argument.
-template <class Parse> CLI::Validator parsed_by(Parse parse, const std::string& form) {
+// (No description: the option's type name already shows the form.)
+template <class Parse> CLI::Validator parsed_by(Parse parse) {
   return CLI::Validator(
       [parse](std::string& text) -> std::string {
         try {
@@ -41,7 +42,7 @@ template <class Parse> CLI::Validator parsed_by(Parse parse, const std::string& 
           return e.what();
         }
       },
-      form);
+      "");
 }
 
 void run_study_command(const StudyArgs& a) {
@@ -155,7 +156,7 @@ void register_study_commands(CLI::App& app) {
         ->required()
         ->expected(1)
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
-        ->check(parsed_by([](const std::string& t) { parse_varied_key(t); }, "KEY=FROM:TO:STEP"));
+        ->check(parsed_by([](const std::string& t) { parse_varied_key(t); }));
     cmd->add_option("--from", a->analysis.from_m_per_s, "lowest speed (m/s)")
         ->capture_default_str()
         ->check(finite_in(flag_ranges::speed_m_per_s));
@@ -180,7 +181,7 @@ void register_study_commands(CLI::App& app) {
            "compute only the combinations with index % N == I - 1 (join the shards' --out folders "
            "with `railstab merge`; no plots)")
         ->type_name("I/N")
-        ->check(parsed_by([](const std::string& t) { parse_study_shard(t); }, "I/N"));
+        ->check(parsed_by([](const std::string& t) { parse_study_shard(t); }));
     cmd->add_option("--out", a->out_dir, "output directory")->capture_default_str();
     cmd->add_flag("!--no-plots", a->plots, "do not run gnuplot (CSV, JSON and record only)");
     cmd->callback([a] { run_study_command(*a); });
