@@ -2,6 +2,7 @@
 
 #include "check/model_check.hpp"
 #include "cli/numeric_flags.hpp"
+#include "cli/set_flag.hpp"
 #include "io/file_names.hpp"
 #include "io/output_set.hpp"
 #include "report/model_check_report.hpp"
@@ -51,6 +52,7 @@ void register_check_command(CLI::App& app) {
       "check", "model checks before a run: masses, axle loads, static deflections, natural "
                "frequencies at rest, warnings for the usual input mistakes");
   cmd->add_option("scene", a->scene, "scene file (TOML)")->required()->check(CLI::ExistingFile);
+  add_set_flag(cmd, a->overrides.values);
   cmd->add_option("--speed", a->overrides.speed_m_per_s,
                   "speed V in m/s of the equilibrium the axle loads are taken at")
       ->check(finite_in(flag_ranges::speed_m_per_s));

@@ -3,8 +3,10 @@
 #include "cli/check_command.hpp"
 #include "cli/contact_geometry_command.hpp"
 #include "cli/modes_command.hpp"
+#include "cli/sensitivity_command.hpp"
 #include "cli/simulate_command.hpp"
 #include "cli/stability_commands.hpp"
+#include "cli/study_command.hpp"
 #include "cli/verify_command.hpp"
 #include "cli/work_precision_command.hpp"
 #include "setup/model_error_context.hpp"
@@ -19,6 +21,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   railstab::register_simulate_command(app);
   railstab::register_stability_commands(app);
+  railstab::register_study_commands(app);
+  railstab::register_sensitivity_command(app);
   railstab::register_modes_command(app);
   railstab::register_verify_command(app);
   railstab::register_work_precision_command(app);

@@ -3,6 +3,7 @@
 #include "cli/model_warnings.hpp"
 #include "report/run_conditions.hpp"
 #include "cli/numeric_flags.hpp"
+#include "cli/set_flag.hpp"
 #include "io/file_names.hpp"
 #include "io/gnuplot.hpp"
 #include "io/output_set.hpp"
@@ -76,6 +77,7 @@ void register_modes_command(CLI::App& app) {
                "lateral and yaw of every body at four phases; by default the lateral-plane modes, "
                "least damped first");
   cmd->add_option("scene", a->scene, "scene file (TOML)")->required()->check(CLI::ExistingFile);
+  add_set_flag(cmd, a->overrides.values);
   cmd->add_option("--speed", a->overrides.speed_m_per_s, "speed V in m/s")
       ->check(finite_in(flag_ranges::speed_m_per_s));
   cmd->add_option("--arc-length", a->overrides.reference_arc_length_m,

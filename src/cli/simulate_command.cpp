@@ -2,6 +2,7 @@
 
 #include "cli/model_warnings.hpp"
 #include "cli/numeric_flags.hpp"
+#include "cli/set_flag.hpp"
 #include "setup/prepare_scene.hpp"
 #include "integrate/error_estimate.hpp"
 #include "integrate/integrator.hpp"
@@ -191,6 +192,7 @@ void register_simulate_command(CLI::App& app) {
   auto args = std::make_shared<SimulateArgs>();
   CLI::App* cmd = app.add_subcommand("simulate", "integrate the nonlinear model in time");
   cmd->add_option("scene", args->scene, "scene file (TOML)")->required()->check(CLI::ExistingFile);
+  add_set_flag(cmd, args->overrides.values);
   cmd->add_option("--speed", args->overrides.speed_m_per_s, "speed V in m/s (overrides the scene)")
       ->check(finite_in(flag_ranges::speed_m_per_s));
   cmd->add_option("--t-end", args->overrides.t_end_s, "end time in s (overrides the scene)")

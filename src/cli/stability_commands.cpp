@@ -3,6 +3,7 @@
 #include "cli/model_warnings.hpp"
 #include "report/run_conditions.hpp"
 #include "cli/numeric_flags.hpp"
+#include "cli/set_flag.hpp"
 #include "setup/prepare_scene.hpp"
 #include "io/file_names.hpp"
 #include "io/gnuplot.hpp"
@@ -30,6 +31,7 @@ struct CommonArgs {
 
 void add_common(CLI::App* cmd, CommonArgs& a) {
   cmd->add_option("scene", a.scene, "scene file (TOML)")->required()->check(CLI::ExistingFile);
+  add_set_flag(cmd, a.overrides.values);
   cmd->add_option("--arc-length", a.overrides.reference_arc_length_m,
                   "arc length (m) of the scene's reference point, e.g. inside an arc for "
                   "steady curving")

@@ -3,6 +3,7 @@
 #include "cli/model_warnings.hpp"
 #include "report/run_conditions.hpp"
 #include "cli/numeric_flags.hpp"
+#include "cli/set_flag.hpp"
 #include "setup/prepare_scene.hpp"
 #include "io/file_names.hpp"
 #include "io/gnuplot.hpp"
@@ -66,6 +67,7 @@ void register_verify_command(CLI::App& app) {
       "verify", "time-domain check of the least stable mode: fitted rate and frequency against "
                 "the eigenvalue");
   cmd->add_option("scene", a->scene, "scene file (TOML)")->required()->check(CLI::ExistingFile);
+  add_set_flag(cmd, a->overrides.values);
   cmd->add_option("--speed", a->overrides.speed_m_per_s, "speed V in m/s")
       ->check(finite_in(flag_ranges::speed_m_per_s));
   cmd->add_option("--arc-length", a->overrides.reference_arc_length_m,

@@ -2,6 +2,7 @@
 
 #include "cli/model_warnings.hpp"
 #include "cli/numeric_flags.hpp"
+#include "cli/set_flag.hpp"
 #include "setup/prepare_scene.hpp"
 #include "integrate/work_precision.hpp"
 #include "io/file_names.hpp"
@@ -71,6 +72,7 @@ void register_work_precision_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "work-precision", "compare the integrators: error against CPU time over a range of tolerances");
   cmd->add_option("scene", args->scene, "scene file (TOML)")->required()->check(CLI::ExistingFile);
+  add_set_flag(cmd, args->overrides.values);
   cmd->add_option("--speed", args->overrides.speed_m_per_s, "speed V in m/s (overrides the scene)")
       ->check(finite_in(flag_ranges::speed_m_per_s));
   cmd->add_option("--t-end", args->overrides.t_end_s,

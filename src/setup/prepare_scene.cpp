@@ -42,7 +42,7 @@ void check_reference_override(const SceneSpec& spec, double reference_m) {
 }  // namespace
 
 SceneSpec load_scene_with_overrides(const std::string& path, const SceneOverrides& overrides) {
-  SceneSpec spec = load_scene_file(path);
+  SceneSpec spec = load_scene_file(path, overrides.values);
   if (overrides.speed_m_per_s) spec.speed_m_per_s = *overrides.speed_m_per_s;
   if (overrides.t_end_s) spec.simulation.t_end_s = *overrides.t_end_s;
   if (overrides.reference_arc_length_m) {

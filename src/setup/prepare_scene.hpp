@@ -3,6 +3,7 @@
 // the model (preloads solved in), solve the static/steady equilibrium at the
 // run's speed.
 #include "equilibrium/equilibrium.hpp"
+#include "io/scene_set_values.hpp"
 #include "model/model.hpp"
 #include "scene/scene_spec.hpp"
 #include "setup/build_model.hpp"
@@ -18,6 +19,9 @@ struct SceneOverrides {
   // Where the reference point is at t = 0 (e.g. inside an arc for steady
   // curving); the scene's reference_arc_length_m otherwise.
   std::optional<double> reference_arc_length_m;
+  // --set KEY=VALUE, applied to the file's document before it is read
+  // (io/scene_set_values.hpp), in order.
+  std::vector<SceneValueSetting> values;
 };
 
 struct PreparedScene {

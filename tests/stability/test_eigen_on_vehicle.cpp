@@ -17,7 +17,7 @@ std::string case_path(const std::string& name) {
 // the dense solver: each ARPACK eigenvalue matches a dense one to 1e-8
 // relative to |lambda| (both are backward stable; residuals ~1e-15).
 TEST(EigenOnVehicle, ArpackAgreesWithDense) {
-  const PreparedScene s = prepare_scene(case_path("thesis_vehicle_tangent"), {100.0, {}, {}});
+  const PreparedScene s = prepare_scene(case_path("thesis_vehicle_tangent"), {100.0, {}, {}, {}});
   StabilityOptions dense_opt, arpack_opt;
   arpack_opt.solver = EigenSolverKind::arpack;
   arpack_opt.arpack_shift = {0.0, 2.0 * M_PI * 4.0};

@@ -1,0 +1,69 @@
+// `--set` from the command line: the same files as an edited copy of the
+// scene, and bad settings refused with the flag and the key named, exit
+// non-zero, no output folder.
+#include <gtest/gtest.h>
+
+#include "cli/run_cli.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+
+namespace {
+std::string file_text(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+}  // namespace
+
+TEST(CliSet, SameFilesAsAnEditedSceneAndBadSettingsRefused) {
+  const fs::path dir = fs::temp_directory_path() / ("railstab_cli_set_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string scene = std::string(RAILSTAB_CASES_DIR) + "/textbook_wheelset.toml";
+  std::string text = file_text(scene);
+  const std::string from = "conicity = 0.1 ";
+  ASSERT_NE(text.find(from), std::string::npos);
+  text.replace(text.find(from), from.size(), "conicity = 0.2 ");
+  std::ofstream(dir / "edited.toml") << text;
+
+  const std::vector<std::string> flags = {"--from", "5", "--to", "100", "--step", "5", "--no-plots"};
+  auto args = [&](std::vector<std::string> a) {
+    a.insert(a.end(), flags.begin(), flags.end());
+    return a;
+  };
+  const auto by_set = railstab::test::run_railstab(
+      args({"critical-speed", scene, "--set", "contacts.textbook_linear.conicity=0.2", "--out", "a"}), dir);
+  ASSERT_EQ(by_set.exit_code, 0) << by_set.output;
+  const auto by_file = railstab::test::run_railstab(args({"critical-speed", "edited.toml", "--out", "b"}), dir);
+  ASSERT_EQ(by_file.exit_code, 0) << by_file.output;
+  int compared = 0;
+  for (const fs::directory_entry& f : fs::directory_iterator(dir / "a")) {
+    if (f.path().extension() != ".csv") continue;
+    EXPECT_EQ(file_text(f.path()), file_text(dir / "b" / f.path().filename())) << f.path();
+    ++compared;
+  }
+  EXPECT_GT(compared, 0);
+  const auto unchanged = railstab::test::run_railstab(args({"critical-speed", scene, "--out", "c"}), dir);
+  ASSERT_EQ(unchanged.exit_code, 0);
+  EXPECT_NE(unchanged.output, by_set.output);
+
+  const std::vector<std::pair<std::string, std::string>> bad = {
+      {"bodies.carbody.mass_kg=1", "no 'carbody'"},
+      {"bodies.wheelset1.mass_kg=abc", "expected a finite number"},
+      {"bodies.wheelset1.inertia_kg_m2[7]=1", "out of range"},
+      {"no_equals_sign", "expected KEY=VALUE"},
+  };
+  for (const auto& [setting, said] : bad) {
+    const auto run = railstab::test::run_railstab(
+        {"eigen", scene, "--set", "scene.speed_m_per_s=20", "--set", setting, "--out", "bad"}, dir);
+    EXPECT_NE(run.exit_code, 0) << setting;
+    EXPECT_NE(run.output.find("--set"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find(setting.substr(0, setting.find('='))), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find(said), std::string::npos) << run.output;
+    EXPECT_FALSE(fs::exists(dir / "bad")) << setting;
+  }
+  fs::remove_all(dir);
+}

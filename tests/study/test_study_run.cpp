@@ -1,0 +1,127 @@
+// Running a study: each point equals a critical-speed search of the scene
+// with its values set, a failing combination is a row with its error (the
+// others are computed), results do not depend on the number of threads, and
+// records of shards merge into the whole study.
+#include <gtest/gtest.h>
+
+#include "setup/prepare_scene.hpp"
+#include "stability/speed_analysis.hpp"
+#include "study/study_record.hpp"
+#include "study/study_run.hpp"
+
+#include <fstream>
+#include <sstream>
+
+using namespace railstab;
+
+namespace {
+
+StudyDefinition textbook_study(std::vector<VariedKey> varied) {
+  StudyDefinition d;
+  d.scene_path = std::string(RAILSTAB_CASES_DIR) + "/textbook_wheelset.toml";
+  d.scene_name = "textbook_wheelset";
+  d.scene_hash = "0";
+  d.varied = std::move(varied);
+  d.analysis.from_m_per_s = 5.0;
+  d.analysis.to_m_per_s = 120.0;
+  d.analysis.grid_step_m_per_s = 5.0;
+  return d;
+}
+
+}  // namespace
+
+TEST(StudyRun, EachPointIsTheSearchOfTheSceneWithItsValues) {
+  const StudyDefinition d = textbook_study({parse_varied_key("contacts.textbook_linear.conicity=0.1:0.3:0.1")});
+  const std::vector<StudyPoint> points = run_study(d, {});
+  ASSERT_EQ(points.size(), 3u);
+  for (const StudyPoint& p : points) {
+    SceneOverrides o;
+    o.values = {{"contacts.textbook_linear.conicity", p.values[0]}};
+    const PreparedScene s = prepare_scene(d.scene_path, o);
+    CriticalSpeedOptions opt;
+    opt.from_m_per_s = 5.0;
+    opt.to_m_per_s = 120.0;
+    opt.grid_step_m_per_s = 5.0;
+    const CriticalSpeedResult r = find_critical_speed(s.model, s.equilibrium.state, s.speed_m_per_s, opt);
+    ASSERT_TRUE(r.critical_speed_found);
+    EXPECT_EQ(p.status, "critical_speed_found");
+    EXPECT_EQ(p.critical_speed_m_per_s, r.critical_speed_m_per_s);
+    EXPECT_GT(p.frequency_hz, 0.0);
+    EXPECT_FALSE(p.mode.empty());
+  }
+  // Klingel: hunting speed ~ 1/sqrt(conicity) for this wheelset on springs
+  // (the kinematic frequency grows with sqrt(lambda)); at least it falls.
+  EXPECT_GT(points[0].critical_speed_m_per_s, points[1].critical_speed_m_per_s);
+  EXPECT_GT(points[1].critical_speed_m_per_s, points[2].critical_speed_m_per_s);
+}
+
+TEST(StudyRun, AFailingCombinationIsARowNotTheEndAndThreadsDoNotChangeResults) {
+  // A mass of -1000 or 0 kg is refused by the scene check; 1000 and 2000 kg run.
+  const StudyDefinition d = textbook_study({parse_varied_key("bodies.wheelset1.mass_kg=-1000:2000:1000"),
+                                            parse_varied_key("contacts.textbook_linear.conicity=0.1:0.2:0.1")});
+  StudyRunOptions one, two;
+  two.jobs = 2;
+  std::vector<std::string> progress;
+  two.progress = [&](const std::string& line) { progress.push_back(line); };
+  const std::vector<StudyPoint> a = run_study(d, one), b = run_study(d, two);
+  ASSERT_EQ(a.size(), 8u);
+  ASSERT_EQ(b.size(), 8u);
+  EXPECT_EQ(progress.size(), 8u);
+  for (std::size_t i = 0; i < 8; ++i) {
+    EXPECT_EQ(a[i].index, i);
+    EXPECT_EQ(a[i].status, b[i].status);
+    EXPECT_EQ(a[i].critical_speed_m_per_s, b[i].critical_speed_m_per_s);
+    EXPECT_EQ(a[i].frequency_hz, b[i].frequency_hz);
+    EXPECT_EQ(a[i].message, b[i].message);
+  }
+  for (std::size_t i : {0u, 1u, 2u, 3u}) {
+    EXPECT_EQ(a[i].status, "error");
+    EXPECT_NE(a[i].message.find("mass_kg"), std::string::npos) << a[i].message;
+    EXPECT_NE(a[i].message.find("--vary bodies.wheelset1.mass_kg=-1000:2000:1000"), std::string::npos)
+        << a[i].message;
+  }
+  for (std::size_t i : {4u, 5u, 6u, 7u}) EXPECT_EQ(a[i].status, "critical_speed_found") << a[i].message;
+}
+
+TEST(StudyRun, ShardRecordsMergeIntoTheWholeStudy) {
+  const StudyDefinition d = textbook_study({parse_varied_key("contacts.textbook_linear.conicity=0.1:0.5:0.1")});
+  const std::vector<StudyPoint> whole = run_study(d, {});
+  std::vector<StudyRecord> records;
+  for (std::size_t i = 1; i <= 2; ++i) {
+    StudyRunOptions o;
+    o.shard = {i, 2};
+    std::stringstream text;
+    write_study_record(text, d, o.shard, run_study(d, o));
+    const std::string path = ::testing::TempDir() + "railstab_record_" + std::to_string(i) + ".toml";
+    { std::ofstream(path) << text.str(); }
+    records.push_back(read_study_record(path));
+  }
+  const std::vector<StudyPoint> merged = merge_study_records({records[1], records[0]});
+  ASSERT_EQ(merged.size(), whole.size());
+  for (std::size_t i = 0; i < whole.size(); ++i) {
+    EXPECT_EQ(merged[i].index, i);
+    EXPECT_EQ(merged[i].values, whole[i].values);
+    EXPECT_EQ(merged[i].critical_speed_m_per_s, whole[i].critical_speed_m_per_s);  // exact
+    EXPECT_EQ(merged[i].frequency_hz, whole[i].frequency_hz);
+    EXPECT_EQ(merged[i].mode, whole[i].mode);
+  }
+  auto merge_error = [](const std::vector<StudyRecord>& r) {
+    try {
+      merge_study_records(r);
+    } catch (const std::runtime_error& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_NE(merge_error({records[0]}).find("shard(s) 2/2 missing"), std::string::npos);
+  EXPECT_NE(merge_error({records[0], records[0]}).find("given twice"), std::string::npos);
+  StudyRecord other = records[1];
+  other.definition.analysis.to_m_per_s = 100.0;
+  EXPECT_NE(merge_error({records[0], other}).find("different study"), std::string::npos);
+  other = records[1];
+  other.definition.scene_hash = "1";
+  EXPECT_NE(merge_error({records[0], other}).find("different study"), std::string::npos);
+  other = records[1];
+  other.points.pop_back();
+  EXPECT_NE(merge_error({records[0], other}).find("missing"), std::string::npos);
+}
