@@ -107,7 +107,10 @@ struct CriticalSpeedResult {
   bool damping_below_at_start = false;
   double damping_limit_speed_m_per_s = 0.0;
   StabilityPoint at_damping_limit;   // the side above the limit of the final bracket
-  std::vector<StabilityPoint> grid;  // the whole speed grid (for root locus and plots)
+  // The whole speed grid (for root locus and plots). Its points, and the
+  // bisection's, keep modes and eigenvectors but not the state matrix
+  // (linear.A and A_sparse released: memory per point bounded).
+  std::vector<StabilityPoint> grid;
   int evaluations = 0;
   double seconds = 0.0;
   // The grid stops at the first speed without a steady state (e.g. a cant
