@@ -2,7 +2,7 @@
 # Install the Debian packages railstab needs (idempotent: does nothing when
 # they are all present). Run as root on Debian 12.
 set -euo pipefail
-packages=(g++ cmake make libeigen3-dev libarpack2-dev libsundials-dev gnuplot-nox
+packages=(g++ cmake make libeigen3-dev libarpack2-dev libsundials-dev libsuitesparse-dev gnuplot-nox
           libtomlplusplus-dev libcli11-dev libgtest-dev clang libclang-rt-14-dev
           parallel)  # GNU parallel: the sharded-study example (README "Parameter studies")
 missing=()

@@ -41,9 +41,10 @@ void add_common(CLI::App* cmd, CommonArgs& a) {
 
 void add_solver(CLI::App* cmd, CommonArgs& a) {
   cmd->add_option("--solver", a.solver,
-                  "eigen-solver: dense (all modes), arpack (shift-invert near the hunting "
-                  "band) or auto (dense below 150 states, ARPACK from there)")
-      ->check(CLI::IsMember({"auto", "dense", "arpack"}))
+                  "eigen-solver: dense (all modes), sparse (every mode in the hunting band, "
+                  "shift-invert on a sparse LU at several shifts), arpack (the 16 modes nearest "
+                  "one shift) or auto (dense below 200 states, sparse from there)")
+      ->check(CLI::IsMember({"auto", "dense", "sparse", "arpack"}))
       ->capture_default_str();
   cmd->add_option("--hunting-band", a.hunting_band_hz,
                   "highest mode frequency (Hz) that decides stability; faster unstable modes "
@@ -54,9 +55,10 @@ void add_solver(CLI::App* cmd, CommonArgs& a) {
 
 StabilityOptions stability_options(const CommonArgs& a) {
   StabilityOptions o;
-  o.solver = a.solver == "arpack"  ? EigenSolverKind::arpack
-             : a.solver == "dense" ? EigenSolverKind::dense
-                                   : EigenSolverKind::automatic;
+  o.solver = a.solver == "arpack"   ? EigenSolverKind::arpack
+             : a.solver == "dense"  ? EigenSolverKind::dense
+             : a.solver == "sparse" ? EigenSolverKind::sparse
+                                    : EigenSolverKind::automatic;
   o.max_frequency_hz = a.hunting_band_hz;
   return o;
 }

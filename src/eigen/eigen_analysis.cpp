@@ -1,4 +1,5 @@
 #include "eigen/eigen_analysis.hpp"
+#include "eigen/eigenvector_phase.hpp"
 
 #include <arpack/arpack.hpp>
 
@@ -21,6 +22,8 @@ using Complex = std::complex<double>;
 // Eigenpair bookkeeping shared by both solvers
 // ---------------------------------------------------------------------------
 
+}  // namespace
+
 // Unit 2-norm, and the phase that makes the largest-magnitude component real
 // positive: eigenvectors are only defined up to a complex scalar, and a fixed
 // convention lets callers compare or plot them without further work.
@@ -32,6 +35,8 @@ Eigen::VectorXcd with_canonical_phase(Eigen::VectorXcd v) {
   const Complex unit_phase = v(peak) / std::abs(v(peak));
   return v * (std::conj(unit_phase) / norm);
 }
+
+namespace {
 
 double relative_residual(const Eigen::MatrixXd& A, double norm_A, Complex lambda,
                          const Eigen::VectorXcd& v) {

@@ -23,7 +23,7 @@ class ArkStepper final : public Stepper {
  public:
   ArkStepper(const IntegrationOptions& o, const Eigen::VectorXd& x0, ModelCallbackData& data)
       : Stepper(x0),
-        linear_(y_, ctx_),
+        linear_(y_, ctx_, data),
         ark_(create_arkstep(o, y_, ctx_, data), ARKStepFree),
         n_roots_(data.roots->size()) {
     void* mem = ark_.mem;
@@ -87,7 +87,7 @@ class ArkStepper final : public Stepper {
   }
 
  private:
-  DenseLinearSolver linear_;
+  NewtonLinearSolver linear_;
   IntegratorMemory ark_;  // declared last: freed before the solver
   int n_roots_;
 };

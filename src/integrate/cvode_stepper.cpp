@@ -11,7 +11,7 @@ class CvodeStepper final : public Stepper {
  public:
   CvodeStepper(const IntegrationOptions& o, const Eigen::VectorXd& x0, ModelCallbackData& data)
       : Stepper(x0),
-        linear_(y_, ctx_),
+        linear_(y_, ctx_, data),
         cvode_(CVodeCreate(o.kind == IntegratorKind::cvode_adams ? CV_ADAMS : CV_BDF, ctx_),
                CVodeFree),
         n_roots_(data.roots->size()) {
@@ -61,7 +61,7 @@ class CvodeStepper final : public Stepper {
   }
 
  private:
-  DenseLinearSolver linear_;
+  NewtonLinearSolver linear_;
   IntegratorMemory cvode_;  // declared last: freed before the solver
   int n_roots_;
 };

@@ -132,6 +132,11 @@ IntegrationOptions integration_options_for(const SimulationSpec& simulation) {
   return o;
 }
 
+bool uses_sparse_newton(NewtonMatrixKind kind, int n_states) {
+  if (kind != NewtonMatrixKind::automatic) return kind == NewtonMatrixKind::sparse;
+  return n_states >= kSparseNewtonFromStates;
+}
+
 Trajectory integrate(const Model& model, double speed_m_per_s, const Eigen::VectorXd& x0,
                      const IntegrationOptions& options) {
   if (!order_available(options.kind, options.order))
@@ -143,6 +148,9 @@ Trajectory integrate(const Model& model, double speed_m_per_s, const Eigen::Vect
   const std::clock_t cpu_start = std::clock();
   const RootFunctionSet roots(model, speed_m_per_s);
   ModelCallbackData data(model, speed_m_per_s, roots, options.cpu_time_budget_s);
+  const bool implicit = options.kind != IntegratorKind::arkode_erk;
+  if (implicit && uses_sparse_newton(options.newton_matrix, model.state_size()))
+    data.sparse_layout = sparse_jacobian_layout(data.jacobian_plan.pattern);
 
   Trajectory traj;
   traj.times_s.push_back(options.t_start_s);

@@ -31,6 +31,15 @@
 
 namespace railstab {
 
+// The Newton matrix I - gamma J of the implicit methods: dense (Eigen's LU)
+// or sparse (SUNDIALS' KLU on the coloured AD Jacobian's pattern,
+// integrate/sparse_newton.hpp). automatic: sparse from
+// kSparseNewtonFromStates states on, the crossover measured by
+// analysis/bench_scaling (README, issue 11).
+enum class NewtonMatrixKind { automatic, dense, sparse };
+inline constexpr int kSparseNewtonFromStates = 200;
+bool uses_sparse_newton(NewtonMatrixKind kind, int n_states);
+
 struct IntegrationOptions {
   IntegratorKind kind = IntegratorKind::cvode_bdf;
   double t_start_s = 0.0;
@@ -61,6 +70,7 @@ struct IntegrationOptions {
   // kept in memory (Trajectory), so a run asking for more (t_end 1e20,
   // output_interval 1e-12) stops before it starts, naming both.
   double max_outputs = 1e6;
+  NewtonMatrixKind newton_matrix = NewtonMatrixKind::automatic;
 };
 
 struct IntegrationStats {

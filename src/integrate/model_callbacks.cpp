@@ -4,6 +4,9 @@
 #include "model/equations_of_motion.hpp"
 
 #include <sunmatrix/sunmatrix_dense.h>
+#include <sunmatrix/sunmatrix_sparse.h>
+
+#include <algorithm>
 
 #include <cmath>
 #include <cstdio>
@@ -56,8 +59,33 @@ template <class F> int guarded(ModelCallbackData& data, F&& f) {
   }
 }
 
+// The sparse Newton matrix's Jacobian: every entry of the fixed layout
+// written (explicit zeros included), so KLU's symbolic analysis stays valid.
+int sparse_jacobian(const ModelCallbackData& data, ForceSelection forces, double t, N_Vector y,
+                    SUNMatrix J) {
+  const SparseJacobianLayout& layout = data.sparse_layout;
+  if (SUNSparseMatrix_NNZ(J) < layout.nonzeros() || SUNSparseMatrix_Columns(J) != layout.n)
+    throw std::logic_error("sparse Newton matrix smaller than the Jacobian's layout");
+  std::copy(layout.column_starts.begin(), layout.column_starts.end(), SUNSparseMatrix_IndexPointers(J));
+  std::copy(layout.row_indices.begin(), layout.row_indices.end(), SUNSparseMatrix_IndexValues(J));
+  double* values = SUNSparseMatrix_Data(J);
+  std::fill(values, values + SUNSparseMatrix_NNZ(J), 0.0);
+  const SparsityPattern& pattern = data.jacobian_plan.pattern;
+  bool finite = true;
+  rhs_jacobian_ad_entries(*data.model, data.jacobian_plan, data.speed_m_per_s, t, as_eigen(y),
+                          forces, [&](int i, int j, double v) {
+                            const std::vector<int>& cols = pattern.columns_of_row[size_t(i)];
+                            const size_t k = size_t(std::lower_bound(cols.begin(), cols.end(), j) -
+                                                    cols.begin());
+                            values[layout.position_of[size_t(i)][k]] = v;
+                            finite = finite && std::isfinite(v);
+                          });
+  return finite ? 0 : 1;
+}
+
 int dense_jacobian(const ModelCallbackData& data, ForceSelection forces, double t, N_Vector y,
                    SUNMatrix J) {
+  if (SUNMatGetID(J) == SUNMATRIX_SPARSE) return sparse_jacobian(data, forces, t, y, J);
   const long n = SUNDenseMatrix_Rows(J);
   Eigen::Map<Eigen::MatrixXd> jac(SUNDenseMatrix_Data(J), n, n);  // column-major
   jac = rhs_jacobian_ad(*data.model, data.jacobian_plan, data.speed_m_per_s, t, as_eigen(y),

@@ -22,6 +22,7 @@
 // explicit stage evaluation (f_I is reused when ARKStep has just evaluated it
 // at the same point, e.g. at the start of a step).
 #include "integrate/root_functions.hpp"
+#include "integrate/sparse_newton.hpp"
 #include "linear/jacobian_pattern.hpp"
 #include "model/model.hpp"
 #include "model/workspace.hpp"
@@ -47,6 +48,10 @@ struct ModelCallbackData {
   bool imex_split = false;  // IMEX only: see above
   Workspace<double> workspace;
   RhsJacobianPlan jacobian_plan;  // the coloured AD Jacobian's, made once per run
+  // Set (non-empty) when the Newton matrix is sparse (integrate/sparse_newton.hpp):
+  // the Jacobian callbacks then fill a CSC SUNMatrix in this layout.
+  SparseJacobianLayout sparse_layout;
+  bool sparse_newton() const { return sparse_layout.n > 0; }
   Eigen::VectorXd xdot_buffer;  // sized once: the rhs callbacks do not allocate
   std::string error;                     // first failure inside a callback
   std::string sundials_message;          // SUNDIALS' last error message

@@ -2,7 +2,9 @@
 
 #include "integrate/eigen_dense_solver.hpp"
 
+#include <sunlinsol/sunlinsol_klu.h>
 #include <sunmatrix/sunmatrix_dense.h>
+#include <sunmatrix/sunmatrix_sparse.h>
 
 #include <cstdlib>
 #include <stdexcept>
@@ -32,17 +34,23 @@ IntegratorMemory::~IntegratorMemory() {
   if (mem) free(&mem);
 }
 
-DenseLinearSolver::DenseLinearSolver(N_Vector y, SUNContext ctx) {
+NewtonLinearSolver::NewtonLinearSolver(N_Vector y, SUNContext ctx, const ModelCallbackData& data) {
   const sunindextype n = N_VGetLength(y);
-  A = SUNDenseMatrix(n, n, ctx);
-  if (A) LS = make_eigen_dense_solver(n, ctx);
+  if (data.sparse_newton()) {
+    A = SUNSparseMatrix(n, n, data.sparse_layout.nonzeros(), CSC_MAT, ctx);
+    if (A) LS = SUNLinSol_KLU(y, A, ctx);
+  } else {
+    A = SUNDenseMatrix(n, n, ctx);
+    if (A) LS = make_eigen_dense_solver(n, ctx);
+  }
   if (!A || !LS) {
     if (A) SUNMatDestroy(A);
-    throw std::runtime_error("SUNDIALS dense matrix/linear solver creation failed");
+    throw std::runtime_error(std::string("SUNDIALS ") + (data.sparse_newton() ? "sparse (KLU)" : "dense") +
+                             " matrix/linear solver creation failed");
   }
 }
 
-DenseLinearSolver::~DenseLinearSolver() {
+NewtonLinearSolver::~NewtonLinearSolver() {
   SUNLinSolFree(LS);
   SUNMatDestroy(A);
 }

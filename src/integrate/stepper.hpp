@@ -58,14 +58,15 @@ struct IntegratorMemory {
   IntegratorMemory& operator=(const IntegratorMemory&) = delete;
 };
 
-// Dense matrix and direct solver for the Newton iterations (CVODE, ARKStep):
-// SUNDIALS assembles I - gamma J in the dense matrix, Eigen's LU solves
-// (eigen_dense_solver.hpp).
-struct DenseLinearSolver {
-  DenseLinearSolver(N_Vector y, SUNContext ctx);
-  ~DenseLinearSolver();
-  DenseLinearSolver(const DenseLinearSolver&) = delete;
-  DenseLinearSolver& operator=(const DenseLinearSolver&) = delete;
+// Matrix and direct solver for the Newton iterations (CVODE, ARKStep):
+// SUNDIALS assembles I - gamma J in it. Dense: Eigen's LU
+// (eigen_dense_solver.hpp); sparse (data.sparse_newton()): a CSC matrix in
+// the Jacobian's layout and KLU (sparse_newton.hpp).
+struct NewtonLinearSolver {
+  NewtonLinearSolver(N_Vector y, SUNContext ctx, const ModelCallbackData& data);
+  ~NewtonLinearSolver();
+  NewtonLinearSolver(const NewtonLinearSolver&) = delete;
+  NewtonLinearSolver& operator=(const NewtonLinearSolver&) = delete;
   SUNMatrix A = nullptr;
   SUNLinearSolver LS = nullptr;
 };

@@ -12,6 +12,8 @@
 //   [[elements]]        name, type, body1, body2, points, stiffness, damping, ...
 //   [simulation]        optional: t_end_s, output_interval_s, integrator, integrator_order,
 //                       relative_tolerance, absolute_tolerance
+//   [train]             optional: cars, car_spacing_m, [[train.couplers]] (elements
+//                       between consecutive cars): N copies of the vehicle (scene/train.hpp)
 //
 // How this file is organised:
 //   1. message helpers        every error reads "<file>: <key path>: expected ..., got ..."
@@ -25,6 +27,7 @@
 #include "contact_geometry/profile_contact_geometry.hpp"
 #include "io/regular_file.hpp"
 #include "scene/physical_ranges.hpp"
+#include "scene/train.hpp"
 
 #include <toml++/toml.h>
 
@@ -1082,7 +1085,9 @@ struct ElementList {
   std::vector<std::string> file_paths;
 };
 
-ElementList read_elements(const TableReader& top) {
+// The element tables of the array `key` of `owner` ([[elements]], and
+// [[train.couplers]] which are elements too).
+ElementList read_element_tables(const TableReader& owner, std::string_view key) {
   std::vector<std::string_view> all_keys = kCommonElementKeys;
   Choices<size_t> types;
   for (size_t i = 0; i < element_readers().size(); ++i) {
@@ -1091,7 +1096,7 @@ ElementList read_elements(const TableReader& top) {
     all_keys.insert(all_keys.end(), r.keys.begin(), r.keys.end());
   }
   ElementList list;
-  for (const TableReader& any : top.tables_in_array_or_none("elements", all_keys)) {
+  for (const TableReader& any : owner.tables_in_array_or_none(key, all_keys)) {
     const ElementReader& reader = element_readers()[any.choice("type", types)];
     std::vector<std::string_view> keys = kCommonElementKeys;
     keys.insert(keys.end(), reader.keys.begin(), reader.keys.end());
@@ -1128,6 +1133,57 @@ ElementList read_elements(const TableReader& top) {
     }
   }
   return list;
+}
+
+ElementList read_elements(const TableReader& top) { return read_element_tables(top, "elements"); }
+
+// --- [train] ---------------------------------------------------------------------
+// cars, car_spacing_m, [[train.couplers]] (scene/train.hpp). The train is
+// expanded here, before the semantic checks, so that every later stage sees
+// an ordinary scene; what only the file knows (coupler bodies are the
+// vehicle's, cars a whole number) is checked against the file's keys first.
+constexpr int kMaxTrainCars = 64;
+
+struct TrainExpansion {
+  SceneSpec scene;
+  std::vector<std::string> element_paths;
+};
+
+TrainExpansion expand_train(const TableReader& train, SceneSpec vehicle,
+                            std::vector<std::string> vehicle_element_paths) {
+  TrainSpec spec;
+  const double cars = train.number("cars", "");
+  if (!(cars >= 1 && cars <= kMaxTrainCars && cars == std::floor(cars)))
+    train.fail("cars", "a whole number of cars from 1 to " + std::to_string(kMaxTrainCars),
+               format_number(cars));
+  spec.cars = int(cars);
+  spec.car_spacing_m = train.number("car_spacing_m", "m");
+  if (!(spec.car_spacing_m > 0.0 && spec.car_spacing_m <= 1000.0))
+    train.fail("car_spacing_m",
+               "the distance along the track between the same point of two consecutive cars, "
+               "in (0, 1000] m",
+               format_number(spec.car_spacing_m));
+  ElementList couplers = read_element_tables(train, "couplers");
+  std::vector<std::string> names;
+  for (const BodySpec& body : vehicle.bodies) names.push_back(body.name);
+  for (size_t i = 0; i < couplers.specs.size(); ++i) {
+    const ElementEnds& e = ends_of(couplers.specs[i]);
+    for (const auto& [key, body] : {std::pair<const char*, const std::string*>{"body1", &e.body1_name},
+                                    {"body2", &e.body2_name}})
+      if (std::find(names.begin(), names.end(), *body) == names.end())
+        throw scene_error(train.source(), child_path(couplers.file_paths[i], key),
+                          "unknown body " + quoted(*body) + " (a coupler joins bodies of the " +
+                              "vehicle: " + comma_separated(names) + ")");
+  }
+  spec.couplers = std::move(couplers.specs);
+  TrainExpansion out{make_train(vehicle, spec), {}};
+  for (int car = 1; car <= spec.cars; ++car)
+    out.element_paths.insert(out.element_paths.end(), vehicle_element_paths.begin(),
+                             vehicle_element_paths.end());
+  for (int car = 1; car < spec.cars; ++car)
+    out.element_paths.insert(out.element_paths.end(), couplers.file_paths.begin(),
+                             couplers.file_paths.end());
+  return out;
 }
 
 // --- [simulation] ------------------------------------------------------------------
@@ -1539,7 +1595,7 @@ class SceneChecker {
 SceneSpec parse_scene(const std::string& toml_text, const std::string& source_name) {
   const toml::table root = parse_toml(toml_text, source_name);
   const TableReader top(root, "", source_name,
-                        {"scene", "track", "contacts", "bodies", "elements", "simulation"});
+                        {"scene", "track", "contacts", "bodies", "elements", "simulation", "train"});
   SceneSpec scene;
   scene.source_path = source_name;
   read_scene_section(top.table("scene", {"name", "speed_m_per_s", "gravity_m_per_s2",
@@ -1555,6 +1611,12 @@ SceneSpec parse_scene(const std::string& toml_text, const std::string& source_na
   scene.simulation = read_simulation(top.optional_table(
       "simulation", {"t_end_s", "output_interval_s", "integrator", "integrator_order",
                      "relative_tolerance", "absolute_tolerance"}));
+  if (const std::optional<TableReader> train =
+          top.optional_table("train", {"cars", "car_spacing_m", "couplers"})) {
+    TrainExpansion expanded = expand_train(*train, std::move(scene), std::move(elements.file_paths));
+    scene = std::move(expanded.scene);
+    elements.file_paths = std::move(expanded.element_paths);
+  }
   SceneChecker(scene, std::move(elements.file_paths)).check_all();
   return scene;
 }

@@ -43,9 +43,14 @@ RhsJacobianPlan plan_rhs_jacobian(const Model& model, std::vector<int> rows,
   return plan;
 }
 
-Eigen::MatrixXd rhs_jacobian_ad(const Model& model, const RhsJacobianPlan& plan,
-                                double speed_m_per_s, double t_s, const Eigen::VectorXd& x,
-                                ForceSelection forces) {
+namespace {
+
+// The coloured AD passes: put(i, j, value) for every entry (i, j) of the
+// plan's pattern. Dense and sparse results share this, so they are the same
+// numbers.
+template <class Put>
+void coloured_passes(const Model& model, const RhsJacobianPlan& plan, double speed_m_per_s,
+                     double t_s, const Eigen::VectorXd& x, ForceSelection forces, Put&& put) {
   require_state_size(model, x, "rhs_jacobian_ad");
   const int n = int(x.size());
   const int n_rows = int(plan.rows.size()), n_cols = int(plan.columns.size());
@@ -55,7 +60,6 @@ Eigen::MatrixXd rhs_jacobian_ad(const Model& model, const RhsJacobianPlan& plan,
     if (c < 0 || c >= n) throw std::invalid_argument("rhs_jacobian_ad: plan is for another model");
   const std::vector<int>& colour = plan.colouring.colour_of_column;
   Workspace<AdScalar> ws(model);
-  Eigen::MatrixXd jac = Eigen::MatrixXd::Zero(n_rows, n_cols);
   VecX<AdScalar> x_ad(n), f_ad;
   for (int i = 0; i < n; ++i) x_ad(i) = AdScalar(x(i), AdDerivatives::Zero());
   for (int first = 0; first < plan.colouring.colours; first += kAdChunk) {
@@ -71,10 +75,42 @@ Eigen::MatrixXd rhs_jacobian_ad(const Model& model, const RhsJacobianPlan& plan,
       const AdDerivatives& d = f_ad(plan.rows[std::size_t(i)]).derivatives();
       for (int j : plan.pattern.columns_of_row[std::size_t(i)]) {
         const int slot = colour[std::size_t(j)] - first;
-        if (slot >= 0 && slot < kAdChunk) jac(i, j) = d(slot);
+        if (slot >= 0 && slot < kAdChunk) put(i, j, d(slot));
       }
     }
   }
+}
+
+}  // namespace
+
+Eigen::MatrixXd rhs_jacobian_ad(const Model& model, const RhsJacobianPlan& plan,
+                                double speed_m_per_s, double t_s, const Eigen::VectorXd& x,
+                                ForceSelection forces) {
+  Eigen::MatrixXd jac = Eigen::MatrixXd::Zero(Eigen::Index(plan.rows.size()),
+                                              Eigen::Index(plan.columns.size()));
+  coloured_passes(model, plan, speed_m_per_s, t_s, x, forces,
+                  [&](int i, int j, double v) { jac(i, j) = v; });
+  return jac;
+}
+
+void rhs_jacobian_ad_entries(const Model& model, const RhsJacobianPlan& plan,
+                             double speed_m_per_s, double t_s, const Eigen::VectorXd& x,
+                             ForceSelection forces,
+                             const std::function<void(int, int, double)>& put) {
+  coloured_passes(model, plan, speed_m_per_s, t_s, x, forces, put);
+}
+
+Eigen::SparseMatrix<double> rhs_jacobian_ad_sparse(const Model& model, const RhsJacobianPlan& plan,
+                                                   double speed_m_per_s, double t_s,
+                                                   const Eigen::VectorXd& x,
+                                                   ForceSelection forces) {
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(std::size_t(plan.pattern.nonzeros()));
+  coloured_passes(model, plan, speed_m_per_s, t_s, x, forces, [&](int i, int j, double v) {
+    if (v != 0.0) entries.emplace_back(i, j, v);
+  });
+  Eigen::SparseMatrix<double> jac(Eigen::Index(plan.rows.size()), Eigen::Index(plan.columns.size()));
+  jac.setFromTriplets(entries.begin(), entries.end());
   return jac;
 }
 

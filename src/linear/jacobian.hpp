@@ -19,7 +19,9 @@
 #include "linear/jacobian_pattern.hpp"
 
 #include <Eigen/Dense>
+#include <Eigen/Sparse>
 
+#include <functional>
 #include <vector>
 
 namespace railstab {
@@ -37,6 +39,21 @@ RhsJacobianPlan plan_rhs_jacobian(const Model& model, std::vector<int> rows,
 Eigen::MatrixXd rhs_jacobian_ad(const Model& model, const RhsJacobianPlan& plan,
                                 double speed_m_per_s, double t_s, const Eigen::VectorXd& x,
                                 ForceSelection forces = ForceSelection::all);
+
+// The same entries stored sparse (only the non-zeros of the pattern): for
+// large models (trains) where the dense matrix would be mostly zeros.
+Eigen::SparseMatrix<double> rhs_jacobian_ad_sparse(const Model& model, const RhsJacobianPlan& plan,
+                                                   double speed_m_per_s, double t_s,
+                                                   const Eigen::VectorXd& x,
+                                                   ForceSelection forces = ForceSelection::all);
+
+// The same AD passes handing every entry (i, j) of the plan's pattern, zero
+// or not, to put(i, j, value): for callers that keep their own storage (the
+// time domain's sparse Newton matrix, integrate/sparse_newton.hpp).
+void rhs_jacobian_ad_entries(const Model& model, const RhsJacobianPlan& plan,
+                             double speed_m_per_s, double t_s, const Eigen::VectorXd& x,
+                             ForceSelection forces,
+                             const std::function<void(int, int, double)>& put);
 
 // The whole coloured AD Jacobian (plans on every call: hot loops keep a plan).
 Eigen::MatrixXd rhs_jacobian_ad(const Model& model, double speed_m_per_s, double t_s,

@@ -10,6 +10,7 @@
 #include "model/model.hpp"
 
 #include <Eigen/Dense>
+#include <Eigen/Sparse>
 
 #include <string>
 #include <vector>
@@ -17,11 +18,17 @@
 namespace railstab {
 
 struct LinearModel {
-  Eigen::MatrixXd A;                      // reduced state matrix
+  // The reduced state matrix, dense (A) or, when LinearizationOptions::sparse
+  // asked for it, sparse (A_sparse, and A left empty). A speed sweep may
+  // release both once the eigenvalues are known (stability/speed_analysis).
+  Eigen::MatrixXd A;
+  Eigen::SparseMatrix<double> A_sparse;
+  double norm_A = 0.0;                    // Frobenius norm of the reduced matrix
   std::vector<int> kept_states;           // indices into the full state
   std::vector<std::string> state_names;   // of the kept states
   std::vector<std::string> removed_states;  // cyclic coordinates dropped
   double equilibrium_residual = 0.0;      // max |acceleration| (and internal rate) at the point
+  int states() const { return int(kept_states.size()); }
 };
 
 struct LinearizationOptions {
@@ -30,6 +37,8 @@ struct LinearizationOptions {
   // The whole Jacobian's plan, plan_rhs_jacobian(model), for callers that
   // linearise many times on one model. nullptr: planned per call.
   const RhsJacobianPlan* jacobian_plan = nullptr;
+  // Store A sparse (A_sparse) instead of dense: the same entries.
+  bool sparse = false;
 };
 
 // Throws std::runtime_error naming the worst residual when x is not an

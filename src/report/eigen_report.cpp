@@ -16,7 +16,7 @@ void write_eigen_json(const Model& model, const StabilityPoint& p, OutputSet& ou
     JsonWriter j(out);
     j.begin_object().field("scene", model.name).field("speed_m_s", p.speed_m_per_s);
     write_conditions_json(j, run_conditions(model), {p.speed_m_per_s});
-    j.field("eigen_solver", eigen_solver_name(p.solver_used)).field("states", int(p.linear.A.rows()));
+    j.field("eigen_solver", eigen_solver_name(p.solver_used)).field("states", int(p.linear.states()));
     j.key("removed_cyclic_states").begin_array();
     for (const std::string& r : p.linear.removed_states) j.value(r);
     j.end_array().key("modes").begin_array();
@@ -41,7 +41,7 @@ void write_eigen_json(const Model& model, const StabilityPoint& p, OutputSet& ou
 
 void print_eigen_summary(std::ostream& out, const Model& model, const StabilityPoint& p,
                          double max_frequency_hz) {
-  out << model.name << " at " << p.speed_m_per_s << " m/s: " << p.linear.A.rows() << " states";
+  out << model.name << " at " << p.speed_m_per_s << " m/s: " << p.linear.states() << " states";
   if (!p.linear.removed_states.empty()) {
     out << " (removed cyclic:";
     for (const std::string& r : p.linear.removed_states) out << ' ' << r;

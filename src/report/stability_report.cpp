@@ -337,7 +337,7 @@ void write_json(std::ostream& out, const Model& model, const CriticalSpeedResult
       j.key("critical_speed_m_s").null().key("frequency_hz").null().key("mode").null();
     }
     j.field("eigen_solver", solver)
-        .field("states", int(r.grid.empty() ? 0 : r.grid.front().linear.A.rows()))
+        .field("states", int(r.grid.empty() ? 0 : r.grid.front().linear.states()))
         .field("evaluations", r.evaluations)
         .field("wall_seconds", r.seconds);
     j.key("removed_cyclic_states").begin_array();
@@ -398,7 +398,7 @@ void write_markdown(std::ostream& md_out, const Model& model, const CriticalSpee
     md << std::setprecision(4);
     md << "# Critical speed: " << md_text(model.name) << "\n\n"
        << "Scene `" << md_text(model.source_path) << "`, speeds " << r.from_m_per_s << " to "
-       << r.to_m_per_s << " m/s, " << (r.grid.empty() ? 0 : r.grid.front().linear.A.rows())
+       << r.to_m_per_s << " m/s, " << (r.grid.empty() ? 0 : r.grid.front().linear.states())
        << " states after removing " << (r.grid.empty() ? 0 : r.grid.front().linear.removed_states.size())
        << " cyclic coordinates, eigen-solver " << solver << ", speeds bracketed to "
        << r.requested_tolerance_m_per_s << " m/s, steady states to "
@@ -452,6 +452,11 @@ void write_markdown(std::ostream& md_out, const Model& model, const CriticalSpee
     for (const StabilityPoint& p : r.grid)
       if (!p.validity_warning.empty()) {
         md << "- from " << p.speed_m_per_s << " m/s: " << md_text(p.validity_warning) << "\n";
+        break;
+      }
+    for (const StabilityPoint& p : r.grid)
+      if (!p.eigen_warning.empty()) {
+        md << "- at " << p.speed_m_per_s << " m/s: " << md_text(p.eigen_warning) << "\n";
         break;
       }
     for (const StabilityPoint& p : r.grid)
@@ -563,6 +568,11 @@ void print_critical_speed_summary(std::ostream& out, const Model& model,
   for (const StabilityPoint& p : r.grid)
     if (!p.validity_warning.empty()) {
       out << "warning from " << p.speed_m_per_s << " m/s: " << p.validity_warning << "\n";
+      break;
+    }
+  for (const StabilityPoint& p : r.grid)
+    if (!p.eigen_warning.empty()) {
+      out << "warning at " << p.speed_m_per_s << " m/s: " << p.eigen_warning << "\n";
       break;
     }
   for (const StabilityPoint& p : r.grid)

@@ -38,7 +38,8 @@ std::vector<int> conjugate_partners(const std::vector<ModeReport>& modes) {
 
 std::vector<ModeReport> describe_modes(const Model& model, const LinearModel& lin,
                                        const std::vector<EigenPair>& pairs) {
-  const double zero = neutral_threshold(lin.A);
+  // linearize() sets norm_A (dense or sparse A); a hand-made LinearModel may not.
+  const double zero = 1e-9 * std::max(1.0, lin.norm_A > 0.0 ? lin.norm_A : lin.A.norm());
   const BodyRoles roles = body_roles(model);
   std::vector<ModeReport> modes;
   modes.reserve(pairs.size());

@@ -1,6 +1,7 @@
 #include "stability/speed_analysis.hpp"
 
 #include "contact/wheel_forces.hpp"
+#include "eigen/band_eigen.hpp"
 #include "linear/jacobian.hpp"
 #include "setup/model_error_context.hpp"
 
@@ -10,6 +11,7 @@
 #include <map>
 #include <chrono>
 #include <cmath>
+#include <numbers>
 #include <sstream>
 #include <stdexcept>
 
@@ -20,17 +22,30 @@ std::string eigen_solver_name(EigenSolverKind kind) {
     case EigenSolverKind::automatic: return "auto";
     case EigenSolverKind::dense: return "dense";
     case EigenSolverKind::arpack: return "arpack";
+    case EigenSolverKind::sparse: return "sparse";
   }
   return "unknown";
 }
 
 EigenSolverKind resolved_solver(EigenSolverKind kind, int n_states) {
   if (kind != EigenSolverKind::automatic) return kind;
-  return n_states >= kArpackFromStates ? EigenSolverKind::arpack : EigenSolverKind::dense;
+  return n_states >= kSparseFromStates ? EigenSolverKind::sparse : EigenSolverKind::dense;
+}
+
+static BandCoverOptions band_cover_options(const StabilityOptions& options) {
+  BandCoverOptions b;
+  b.min_real_part_per_s = options.sparse_min_real_part_per_s;
+  b.max_real_part_per_s = options.sparse_max_real_part_per_s;
+  b.max_frequency_hz = options.max_frequency_hz;
+  b.eigenvalues_per_shift = options.sparse_eigenvalues_per_shift;
+  return b;
 }
 
 std::vector<EigenPair> solve_eigen(const Eigen::MatrixXd& A, const StabilityOptions& options) {
-  if (resolved_solver(options.solver, int(A.rows())) == EigenSolverKind::dense) return eigen_dense(A);
+  const EigenSolverKind kind = resolved_solver(options.solver, int(A.rows()));
+  if (kind == EigenSolverKind::dense) return eigen_dense(A);
+  if (kind == EigenSolverKind::sparse)
+    return eigen_sparse_band(A.sparseView(), band_cover_options(options)).pairs;
   ArpackOptions a;
   a.shift = options.arpack_shift;
   a.n_eigenvalues = std::min(options.arpack_eigenvalues, int(A.rows()) - 3);
@@ -109,15 +124,31 @@ StabilityPoint SpeedStability::at(double speed_m_per_s) {
   LinearizationOptions lin_opt;
   lin_opt.time_s = options_.time_s;
   lin_opt.jacobian_plan = &jacobian_plan_;
+  // The model's state count decides the solver (before the Jacobian, which
+  // is stored dense or sparse accordingly; the cyclic coordinates it removes
+  // are a handful).
+  p.solver_used = resolved_solver(options_.solver, model.state_size());
+  lin_opt.sparse = p.solver_used == EigenSolverKind::sparse;
   p.linear = with_model_context(
       model, {"linearisation", speed_m_per_s, t, &p.equilibrium.state},
       [&] { return linearize(model, speed_m_per_s, p.equilibrium.state, lin_opt); });
-  p.solver_used = resolved_solver(options_.solver, int(p.linear.A.rows()));
   EvaluationPlace eigen_place{"eigen-analysis", speed_m_per_s, t, &p.equilibrium.state};
-  eigen_place.matrix = &p.linear.A;
+  if (!lin_opt.sparse) eigen_place.matrix = &p.linear.A;
   eigen_place.matrix_state_names = &p.linear.state_names;
   p.modes = with_model_context(model, eigen_place, [&] {
-    return describe_modes(model, p.linear, solve_eigen(p.linear.A, options_));
+    if (!lin_opt.sparse) return describe_modes(model, p.linear, solve_eigen(p.linear.A, options_));
+    const BandEigenResult band = eigen_sparse_band(p.linear.A_sparse, band_cover_options(options_));
+    p.eigen_shifts = int(band.discs.size());
+    if (!band.covered) {
+      std::ostringstream w;
+      w << "sparse eigen-analysis: " << band.discs.size()
+        << " shifts did not cover the hunting band's box (Re in ["
+        << options_.sparse_min_real_part_per_s << ", " << options_.sparse_max_real_part_per_s
+        << "] 1/s, 0 to " << options_.max_frequency_hz
+        << " Hz): a mode there may be missing (use --solver dense)";
+      p.eigen_warning = w.str();
+    }
+    return describe_modes(model, p.linear, band.pairs);
   });
   p.least_stable = least_stable_mode(p.modes, options_.max_frequency_hz);
   p.least_damped = least_damped_mode(p.modes, options_.max_frequency_hz);
@@ -156,6 +187,15 @@ StabilityPoint SpeedStability::at(double speed_m_per_s) {
 
 namespace {
 
+// What a speed sweep keeps of a point: the eigenvalues, eigenvectors (mode
+// tracking, mode shapes) and the linear model's state bookkeeping, not the
+// state matrix (dense: states^2 doubles, 14 MB per point for a 16-car train;
+// nothing reads it once the modes are known).
+void release_state_matrix(StabilityPoint& p) {
+  p.linear.A = Eigen::MatrixXd();
+  p.linear.A_sparse = Eigen::SparseMatrix<double>();
+}
+
 // Smallest damping ratio in the hunting band minus the limit: negative below it.
 double damping_margin(const StabilityPoint& p, double limit) {
   return p.least_damped >= 0 ? p.modes[size_t(p.least_damped)].damping_ratio - limit : INFINITY;
@@ -181,6 +221,7 @@ SpeedBracket bisect_speed(const Model& model, const CriticalSpeedOptions& option
     StabilityPoint p;
     try {
       p = refine.at(mid);
+      release_state_matrix(p);
     } catch (const std::runtime_error& e) {
       std::ostringstream why;
       why << "the " << what << " bisection stopped at " << mid
@@ -229,11 +270,23 @@ void find_damping_limit(const Model& model, const CriticalSpeedOptions& options,
   r.damping_limit_found = true;
 }
 
+// The sparse solver's box must hold the modes the damping-ratio limit looks
+// at: a ratio below the limit in the band means Re > -limit |lambda|.
+CriticalSpeedOptions with_damping_box(CriticalSpeedOptions options) {
+  if (options.min_damping_ratio > 0.0)
+    options.stability.sparse_min_real_part_per_s =
+        std::min(options.stability.sparse_min_real_part_per_s,
+                 -options.min_damping_ratio * 2.0 * std::numbers::pi *
+                     options.stability.max_frequency_hz);
+  return options;
+}
+
 }  // namespace
 
 CriticalSpeedResult find_critical_speed(const Model& model, const Eigen::VectorXd& equilibrium_guess,
                                         double guess_speed_m_per_s,
-                                        const CriticalSpeedOptions& options) {
+                                        const CriticalSpeedOptions& requested) {
+  const CriticalSpeedOptions options = with_damping_box(requested);
   if (!(options.from_m_per_s > 0.0) || !(options.to_m_per_s > options.from_m_per_s) ||
       !(options.grid_step_m_per_s > 0.0) || !(options.tolerance_m_per_s > 0.0))
     throw std::invalid_argument(
@@ -263,6 +316,7 @@ CriticalSpeedResult find_critical_speed(const Model& model, const Eigen::VectorX
         std::min(options.to_m_per_s, options.from_m_per_s + i * options.grid_step_m_per_s);
     try {
       r.grid.push_back(stability.at(v));
+      release_state_matrix(r.grid.back());
     } catch (const std::runtime_error& e) {
       r.equilibrium_lost_at_m_per_s = v;
       r.equilibrium_error = e.what();

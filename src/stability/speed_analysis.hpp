@@ -14,11 +14,13 @@
 
 namespace railstab {
 
-// automatic: dense (all modes) below kArpackFromStates linear states, ARPACK
-// (the modes nearest the shift) from there on: the crossover measured by
-// analysis/bench_eigen (dense/ARPACK time 0.6 at 100 states, 3.9 at 200).
-enum class EigenSolverKind { automatic, dense, arpack };
-inline constexpr int kArpackFromStates = 150;
+// automatic: dense (all modes) below kSparseFromStates linear states, sparse
+// (every mode in the hunting band's box, eigen/band_eigen.hpp) from there on:
+// the crossover measured by analysis/bench_scaling (README, issue 11).
+// arpack: the arpack_eigenvalues modes nearest one shift, dense LU (only
+// when asked: it decides nothing about the modes it did not compute).
+enum class EigenSolverKind { automatic, dense, arpack, sparse };
+inline constexpr int kSparseFromStates = 200;
 std::string eigen_solver_name(EigenSolverKind kind);
 // The solver `kind` resolves to for an n-state linear model.
 EigenSolverKind resolved_solver(EigenSolverKind kind, int n_states);
@@ -35,6 +37,14 @@ struct StabilityOptions {
   // undamped by the Hertz law) are reported when unstable but do not set the
   // critical speed.
   double max_frequency_hz = 20.0;
+  // sparse: the box searched (with max_frequency_hz) and the solves' size;
+  // every eigenvalue in it is found (eigen/band_eigen.hpp). Its real-part
+  // range holds the crossing of a hunting mode; find_critical_speed widens
+  // the lower end to hold the damping-ratio limit's modes when that is
+  // asked (-min_damping_ratio 2 pi max_frequency_hz).
+  double sparse_min_real_part_per_s = -2.0;
+  double sparse_max_real_part_per_s = 2.0;
+  int sparse_eigenvalues_per_shift = 16;
 };
 
 struct StabilityPoint {
@@ -55,6 +65,10 @@ struct StabilityPoint {
   std::string validity_warning;
   // Unstable non-neutral modes above the hunting band (indices into modes).
   std::vector<int> unstable_above_band;
+  // sparse: how many shifts, and whether their discs covered the box (if
+  // not, eigen_warning says so and the decision may have missed a mode).
+  int eigen_shifts = 0;
+  std::string eigen_warning;
   double seconds = 0.0;           // wall time of this point
 };
 
@@ -101,7 +115,10 @@ struct CriticalSpeedResult {
   bool damping_below_at_start = false;
   double damping_limit_speed_m_per_s = 0.0;
   StabilityPoint at_damping_limit;   // the side above the limit of the final bracket
-  std::vector<StabilityPoint> grid;  // the whole speed grid (for root locus and plots)
+  // The whole speed grid (for root locus and plots). Its points, and the
+  // bisection's, keep modes and eigenvectors but not the state matrix
+  // (linear.A and A_sparse released: memory per point bounded).
+  std::vector<StabilityPoint> grid;
   int evaluations = 0;
   double seconds = 0.0;
   // The grid stops at the first speed without a steady state (e.g. a cant

@@ -60,12 +60,15 @@ TEST(EigenOnVehicle, ThesisBogieCriticalSpeedBetweenTimeDomainRuns) {
   EXPECT_NEAR(r.critical_speed_m_per_s / f, bogie_L, 0.1 * bogie_L);
 }
 
-// auto picks dense below 150 linear states (the thesis vehicle: 78) and
-// ARPACK from 150, the crossover measured by analysis/bench_eigen.
+// auto picks dense below kSparseFromStates states (the thesis vehicle: 82)
+// and the sparse band solver from there, the crossover measured by
+// analysis/bench_scaling; ARPACK at one shift only when asked.
 TEST(EigenOnVehicle, AutomaticSolverChoice) {
   EXPECT_EQ(resolved_solver(EigenSolverKind::automatic, 78), EigenSolverKind::dense);
-  EXPECT_EQ(resolved_solver(EigenSolverKind::automatic, 149), EigenSolverKind::dense);
-  EXPECT_EQ(resolved_solver(EigenSolverKind::automatic, 150), EigenSolverKind::arpack);
+  EXPECT_EQ(resolved_solver(EigenSolverKind::automatic, kSparseFromStates - 1),
+            EigenSolverKind::dense);
+  EXPECT_EQ(resolved_solver(EigenSolverKind::automatic, kSparseFromStates),
+            EigenSolverKind::sparse);
   EXPECT_EQ(resolved_solver(EigenSolverKind::dense, 500), EigenSolverKind::dense);
   EXPECT_EQ(resolved_solver(EigenSolverKind::arpack, 10), EigenSolverKind::arpack);
   const PreparedScene s =

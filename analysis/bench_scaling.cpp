@@ -1,0 +1,235 @@
+// Issue 11 at scale: trains of N thesis vehicles (cases/thesis_train_4.toml
+// with cars = N, N = 1, 2, 4, 8, 16), measured in one run. For each N:
+//  - states (and linear states after the cyclic spin angles);
+//  - the coloured AD Jacobian (sparse result), colours and AD passes;
+//  - the steady state at 100 m/s from the nominal state at that speed
+//    (solve_equilibrium, coloured Newton);
+//  - one eigen-solve near the hunting band at 100 m/s: the sparse band
+//    solver (eigen/band_eigen.hpp: every mode with Re in [-6, 6] 1/s up to
+//    20 Hz) and, up to N = 8 (and N = 16 once), the dense one;
+//  - a 12-speed critical-speed search (grid 60..115 m/s, step 5, no
+//    bisection: 12 evaluations), automatic solver (dense below 200 states,
+//    sparse from there), and the same forced dense up to N = 4;
+//  - 1 s simulated (the scene's integrator: ARKODE SDIRK, rtol 1e-3) from the
+//    steady state with the 1 mm disturbance on car 1, CPU against 1 s.
+// CPU time of this process (clock_gettime(CLOCK_PROCESS_CPUTIME_ID)); calls
+// under 2 s are repeated (5 batches of >= 0.2 s, median of the batch means),
+// longer ones run once (stated). The growth exponent is the least-squares
+// slope of log(CPU) against log(states) over N = 1..16.
+//   build/bench_scaling [cases-dir]            the table
+//   build/bench_scaling --memory N [cases-dir] peak memory (getrusage maxrss)
+//                                              of one full default-range search
+//                                              (CLI defaults: 5..150 m/s, grid
+//                                              2.5 m/s, tolerance 0.01) for N cars
+#include "eigen/band_eigen.hpp"
+#include "eigen/eigen_analysis.hpp"
+#include "equilibrium/equilibrium.hpp"
+#include "integrate/integrator.hpp"
+#include "io/regular_file.hpp"
+#include "io/scene_loader.hpp"
+#include "linear/jacobian.hpp"
+#include "linear/linearization.hpp"
+#include "setup/prepare_scene.hpp"
+#include "stability/speed_analysis.hpp"
+
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <functional>
+#include <regex>
+#include <string>
+#include <vector>
+
+using namespace railstab;
+
+namespace {
+
+double cpu_seconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
+
+// CPU seconds per call: a first call; if it took under 2 s, 5 batches of at
+// least 0.2 s each and the median of the batch means; else the first call.
+struct Timing {
+  double seconds;
+  bool repeated;
+};
+Timing time_call(const std::function<void()>& call) {
+  const double t0 = cpu_seconds();
+  call();
+  const double first = cpu_seconds() - t0;
+  if (first > 2.0) return {first, false};
+  std::vector<double> means;
+  for (int batch = 0; batch < 5; ++batch) {
+    long calls = 0;
+    const double start = cpu_seconds();
+    double elapsed = 0.0;
+    do {
+      call();
+      ++calls;
+      elapsed = cpu_seconds() - start;
+    } while (elapsed < 0.2);
+    means.push_back(elapsed / double(calls));
+  }
+  std::sort(means.begin(), means.end());
+  return {means[2], true};
+}
+
+// The train of cases/thesis_train_4.toml with `cars` cars, its reference
+// point far enough along the tangent for the whole train.
+SceneSpec train_scene(const std::string& cases_dir, int cars) {
+  std::string text = read_regular_file(cases_dir + "/thesis_train_4.toml");
+  text = std::regex_replace(text, std::regex("\ncars = 4\n"), "\ncars = " + std::to_string(cars) + "\n");
+  const double reference = std::max(200.0, 26.0 * cars + 80.0);
+  text = std::regex_replace(text, std::regex("reference_arc_length_m = 200.0"),
+                            "reference_arc_length_m = " + std::to_string(reference));
+  return parse_scene(text, "thesis_train_" + std::to_string(cars));
+}
+
+CriticalSpeedOptions twelve_speeds(EigenSolverKind solver) {
+  CriticalSpeedOptions o;
+  o.from_m_per_s = 60.0;
+  o.to_m_per_s = 115.0;
+  o.grid_step_m_per_s = 5.0;
+  o.tolerance_m_per_s = 5.0;  // the grid only: 12 evaluations
+  o.stability.solver = solver;
+  return o;
+}
+
+double slope(const std::vector<double>& x, const std::vector<double>& y) {
+  const int n = int(x.size());
+  double mx = 0, my = 0;
+  for (int i = 0; i < n; ++i) mx += std::log(x[i]) / n, my += std::log(y[i]) / n;
+  double sxy = 0, sxx = 0;
+  for (int i = 0; i < n; ++i) {
+    sxy += (std::log(x[i]) - mx) * (std::log(y[i]) - my);
+    sxx += (std::log(x[i]) - mx) * (std::log(x[i]) - mx);
+  }
+  return sxy / sxx;
+}
+
+int memory_run(const std::string& cases_dir, int cars) {
+  const PreparedScene s = prepare_scene(train_scene(cases_dir, cars));
+  CriticalSpeedOptions o;  // CLI defaults
+  o.from_m_per_s = 5.0;
+  o.to_m_per_s = 150.0;
+  o.grid_step_m_per_s = 2.5;
+  o.tolerance_m_per_s = 0.01;
+  const double t0 = cpu_seconds();
+  const CriticalSpeedResult r = find_critical_speed(s.model, s.equilibrium.state, s.speed_m_per_s, o);
+  const double cpu = cpu_seconds() - t0;
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  std::printf("N = %d (%d states): full default-range search (5..150 m/s, grid 2.5, tol 0.01): "
+              "%d evaluations, %.2f s CPU, critical speed %s %.4f m/s; peak memory (maxrss) "
+              "%.1f MB\n",
+              cars, s.model.state_size(), r.evaluations, cpu,
+              r.critical_speed_found ? "" : "(not found)", r.critical_speed_m_per_s,
+              double(usage.ru_maxrss) / 1024.0);
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string cases_dir = "cases";
+  if (argc >= 3 && std::string(argv[1]) == "--memory")
+    return memory_run(argc >= 4 ? argv[3] : cases_dir, std::atoi(argv[2]));
+  if (argc >= 2) cases_dir = argv[1];
+  const std::vector<int> sizes = {1, 2, 4, 8, 16};
+  std::vector<double> states, jac_s, eq_s, sparse_s, search_s, sim_s;
+  std::printf("%4s %6s %6s %7s %6s %10s %10s %10s %7s %10s %10s %12s %12s %10s %8s\n", "N",
+              "states", "linear", "colours", "passes", "jacobian_s", "equilib_s", "sparse_eig",
+              "shifts", "dense_eig", "search12_s", "search_dense", "crit/12grid", "sim1s_cpu",
+              "RTF");
+  for (int cars : sizes) {
+    const PreparedScene s = prepare_scene(train_scene(cases_dir, cars));
+    const Model& model = s.model;
+    const double V = 100.0;
+    const RhsJacobianPlan plan = plan_rhs_jacobian(model);
+    SpeedStability sweep(model, s.equilibrium.state, s.speed_m_per_s);
+    const StabilityPoint at_v = sweep.at(V);  // the steady state at V
+    const Eigen::VectorXd x = at_v.equilibrium.state;
+    const Timing jac = time_call([&] { rhs_jacobian_ad_sparse(model, plan, V, 0.0, x); });
+    const RhsJacobianPlan eq_plan = equilibrium_jacobian_plan(model);
+    EquilibriumOptions eq_opt;
+    eq_opt.jacobian_plan = &eq_plan;
+    const Eigen::VectorXd nominal = nominal_state(model, V);
+    const Timing eq = time_call([&] { solve_equilibrium(model, V, nominal, eq_opt); });
+    LinearizationOptions lo;
+    lo.jacobian_plan = &plan;
+    lo.sparse = true;
+    const LinearModel lin = linearize(model, V, x, lo);
+    BandCoverOptions band;
+    int shifts = 0;
+    const Timing sparse = time_call([&] { shifts = int(eigen_sparse_band(lin.A_sparse, band).discs.size()); });
+    Timing dense{NAN, false};
+    if (cars <= 16) {
+      const Eigen::MatrixXd A = Eigen::MatrixXd(lin.A_sparse);
+      if (cars <= 8)
+        dense = time_call([&] { eigen_dense(A); });
+      else {
+        const double t0 = cpu_seconds();
+        eigen_dense(A);
+        dense = {cpu_seconds() - t0, false};
+      }
+    }
+    CriticalSpeedResult r12;
+    const Timing search = time_call([&] {
+      r12 = find_critical_speed(model, s.equilibrium.state, s.speed_m_per_s,
+                                twelve_speeds(EigenSolverKind::automatic));
+    });
+    Timing search_dense{NAN, false};
+    if (cars <= 4)
+      search_dense = time_call([&] {
+        find_critical_speed(model, s.equilibrium.state, s.speed_m_per_s,
+                            twelve_speeds(EigenSolverKind::dense));
+      });
+    // 1 s simulated from the steady state at V plus the disturbance.
+    IntegrationOptions io = integration_options_for(s.spec.simulation);
+    io.t_end_s = 1.0;
+    io.output_interval_s = 0.01;
+    io.cpu_time_budget_s = 300.0;
+    Eigen::VectorXd x0 = x;
+    const PreparedScene at_speed{s.spec, s.model, V, at_v.equilibrium};
+    x0 = perturbed_initial_state(at_speed);
+    double sim = NAN;
+    {
+      const double t0 = cpu_seconds();
+      try {
+        integrate(model, V, x0, io);
+        sim = cpu_seconds() - t0;
+      } catch (const std::exception& e) {
+        std::printf("  (simulation: %s)\n", e.what());
+      }
+    }
+    std::printf("%4d %6d %6d %7d %6d %10.5f %10.5f %10.5f %7d %10.5f %10.4f %12.4f %12s %10.3f %8.3f\n",
+                cars, model.state_size(), lin.states(), plan.colouring.colours, plan.passes(),
+                jac.seconds, eq.seconds, sparse.seconds, shifts, dense.seconds, search.seconds,
+                search_dense.seconds,
+                (r12.critical_speed_found ? std::to_string(r12.critical_speed_m_per_s).substr(0, 7)
+                                          : std::string(r12.stable_in_range ? "stable" : "none"))
+                    .c_str(),
+                sim, std::isfinite(sim) ? 1.0 / sim : NAN);
+    std::fflush(stdout);
+    states.push_back(model.state_size());
+    jac_s.push_back(jac.seconds);
+    eq_s.push_back(eq.seconds);
+    sparse_s.push_back(sparse.seconds);
+    search_s.push_back(search.seconds);
+    sim_s.push_back(std::isfinite(sim) ? sim : 1e9);
+  }
+  std::printf("growth exponents (slope of log CPU on log states, N = 1..16): jacobian %.2f, "
+              "equilibrium %.2f, sparse eigen-solve %.2f, 12-speed search %.2f, 1 s simulated %.2f\n",
+              slope(states, jac_s), slope(states, eq_s), slope(states, sparse_s),
+              slope(states, search_s), slope(states, sim_s));
+  std::printf("(search: automatic solver, dense below %d states; a run over 2 s CPU is timed "
+              "once, shorter ones as the median of 5 batches)\n",
+              kSparseFromStates);
+  return 0;
+}

@@ -1,0 +1,171 @@
+// Sparse eigen-analysis over the hunting band's box (eigen/band_eigen.hpp):
+//  - a block-diagonal matrix with known eigenvalues (2 x 2 blocks
+//    [a b; -b a] -> a +- i b): every one in the box is found, once, with few
+//    eigenvalues per shift (many shifts, k doubled where the discs are thin);
+//  - the thesis vehicle and the four-car train: the sparse result equals the
+//    dense eigenvalues in the box (1e-8 relative), nothing missing or extra;
+//  - the train's critical speed is the same with the sparse and the dense
+//    solver (within the bisection tolerance).
+#include "eigen/band_eigen.hpp"
+#include "setup/prepare_scene.hpp"
+#include "stability/speed_analysis.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <numbers>
+#include <random>
+#include <sstream>
+#include <string>
+
+using namespace railstab;
+
+namespace {
+
+std::string case_path(const std::string& name) {
+  return std::string(RAILSTAB_CASES_DIR) + "/" + name + ".toml";
+}
+
+// A real eigenvalue comes out with |Im| at round-off, of either sign.
+bool in_box(std::complex<double> l, const BandCoverOptions& o) {
+  return l.real() >= o.min_real_part_per_s && l.real() <= o.max_real_part_per_s &&
+         l.imag() >= -1e-12 * std::max(1.0, std::abs(l)) &&
+         l.imag() <= 2.0 * std::numbers::pi * o.max_frequency_hz;
+}
+
+// Every reference eigenvalue in the box is among `found` (each matched once),
+// and every found one is a reference eigenvalue.
+std::string compare_in_box(const std::vector<std::complex<double>>& reference,
+                           const std::vector<EigenPair>& found, const BandCoverOptions& o,
+                           double relative_tolerance) {
+  std::ostringstream out;
+  std::vector<bool> used(found.size(), false);
+  for (std::complex<double> l : reference) {
+    if (!in_box(l, o)) continue;
+    int best = -1;
+    double best_d = 1e300;
+    for (size_t j = 0; j < found.size(); ++j)
+      if (!used[j] && std::abs(found[j].value - l) < best_d) {
+        best_d = std::abs(found[j].value - l);
+        best = int(j);
+      }
+    if (best < 0 || best_d > relative_tolerance * std::max(1.0, std::abs(l)))
+      out << " missing " << l << " (nearest off by " << best_d << ");";
+    else
+      used[size_t(best)] = true;
+  }
+  for (size_t j = 0; j < found.size(); ++j) {
+    double best_d = 1e300;
+    for (std::complex<double> l : reference) best_d = std::min(best_d, std::abs(found[j].value - l));
+    if (best_d > relative_tolerance * std::max(1.0, std::abs(found[j].value)))
+      out << " not an eigenvalue " << found[j].value << ";";
+  }
+  return out.str();
+}
+
+
+}  // namespace
+
+TEST(BandEigen, FindsEveryKnownEigenvalueInTheBoxOnce) {
+  // 300 blocks: eigenvalues a +- i b with a in [-20, 10], b in [0.5, 200]
+  // (some outside the box either way), plus 40 real ones.
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> re(-20.0, 10.0), im(0.5, 200.0);
+  std::vector<Eigen::Triplet<double>> t;
+  std::vector<std::complex<double>> reference;
+  int row = 0;
+  for (int b = 0; b < 300; ++b, row += 2) {
+    const double a = re(rng), w = im(rng);
+    t.emplace_back(row, row, a);
+    t.emplace_back(row, row + 1, w);
+    t.emplace_back(row + 1, row, -w);
+    t.emplace_back(row + 1, row + 1, a);
+    reference.push_back({a, w});
+    reference.push_back({a, -w});
+  }
+  for (int r = 0; r < 40; ++r, ++row) {
+    const double a = re(rng);
+    t.emplace_back(row, row, a);
+    reference.push_back({a, 0.0});
+  }
+  Eigen::SparseMatrix<double> A(row, row);
+  A.setFromTriplets(t.begin(), t.end());
+  BandCoverOptions o;
+  o.eigenvalues_per_shift = 6;  // thin discs: k must grow and shifts multiply
+  const BandEigenResult r = eigen_sparse_band(A, o);
+  ASSERT_TRUE(r.covered);
+  EXPECT_GT(r.discs.size(), 3u);
+  // Only eigenvalues in the box (the discs stick out: more may be found).
+  std::vector<EigenPair> in;
+  for (const EigenPair& p : r.pairs)
+    if (in_box(p.value, o)) in.push_back(p);
+  EXPECT_EQ(compare_in_box(reference, in, o, 1e-9), "");
+  int expected = 0;
+  for (std::complex<double> l : reference) expected += in_box(l, o) ? 1 : 0;
+  EXPECT_EQ(int(in.size()), expected);
+  EXPECT_GT(expected, 20);
+}
+
+TEST(BandEigen, RefusesAnEmptyBox) {
+  Eigen::SparseMatrix<double> A(10, 10);
+  A.setIdentity();
+  BandCoverOptions o;
+  o.min_real_part_per_s = 1.0;
+  o.max_real_part_per_s = 1.0;
+  EXPECT_THROW(eigen_sparse_band(A, o), std::invalid_argument);
+}
+
+class BandEigenOnCase : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(BandEigenOnCase, EqualsDenseInTheBox) {
+  const PreparedScene s = prepare_scene(case_path(GetParam()), {{100.0}, {}, {}});
+  StabilityOptions dense_opt;
+  dense_opt.solver = EigenSolverKind::dense;
+  SpeedStability dense(s.model, s.equilibrium.state, s.speed_m_per_s, dense_opt);
+  const StabilityPoint p = dense.at(100.0);
+  BandCoverOptions o;
+  const BandEigenResult r = eigen_sparse_band(p.linear.A.sparseView(), o);
+  ASSERT_TRUE(r.covered);
+  std::vector<EigenPair> in;
+  for (const EigenPair& q : r.pairs)
+    if (in_box(q.value, o)) in.push_back(q);
+  std::vector<std::complex<double>> reference;
+  for (const ModeReport& m : p.modes) reference.push_back(m.eigenvalue);
+  EXPECT_EQ(compare_in_box(reference, in, o, 1e-8), "");
+  for (const EigenPair& q : in) EXPECT_LT(q.residual, 1e-9) << q.value;
+  // The sweep's sparse path (sparse Jacobian, same solver) agrees too.
+  StabilityOptions sparse_opt;
+  sparse_opt.solver = EigenSolverKind::sparse;
+  SpeedStability sparse(s.model, s.equilibrium.state, s.speed_m_per_s, sparse_opt);
+  const StabilityPoint q = sparse.at(100.0);
+  EXPECT_EQ(q.solver_used, EigenSolverKind::sparse);
+  EXPECT_TRUE(q.eigen_warning.empty()) << q.eigen_warning;
+  std::vector<EigenPair> in_sweep;
+  for (const ModeReport& m : q.modes)
+    if (in_box(m.eigenvalue, o)) in_sweep.push_back({m.eigenvalue, m.vector, m.residual});
+  EXPECT_EQ(compare_in_box(reference, in_sweep, o, 1e-8), "");
+  ASSERT_GE(p.least_stable, 0);
+  ASSERT_GE(q.least_stable, 0);
+  EXPECT_NEAR(q.max_real_part, p.max_real_part, 1e-8 * std::max(1.0, std::abs(p.max_real_part)));
+}
+
+INSTANTIATE_TEST_SUITE_P(Cases, BandEigenOnCase,
+                         ::testing::Values("thesis_vehicle_tangent", "thesis_train_4"));
+
+TEST(BandEigen, TrainCriticalSpeedSparseEqualsDense) {
+  const PreparedScene s = prepare_scene(case_path("thesis_train_4"), {});
+  CriticalSpeedOptions opt;
+  opt.from_m_per_s = 60.0;
+  opt.to_m_per_s = 130.0;
+  opt.grid_step_m_per_s = 10.0;
+  opt.stability.solver = EigenSolverKind::dense;
+  const CriticalSpeedResult dense = find_critical_speed(s.model, s.equilibrium.state, s.speed_m_per_s, opt);
+  opt.stability.solver = EigenSolverKind::sparse;
+  const CriticalSpeedResult sparse = find_critical_speed(s.model, s.equilibrium.state, s.speed_m_per_s, opt);
+  ASSERT_TRUE(dense.critical_speed_found);
+  ASSERT_TRUE(sparse.critical_speed_found);
+  // Both bisect the same margins: equal unless a margin differs in sign,
+  // which the eigenvalue agreement above (1e-8) rules out.
+  EXPECT_NEAR(sparse.critical_speed_m_per_s, dense.critical_speed_m_per_s, 1e-6);
+  for (const StabilityPoint& p : sparse.grid) EXPECT_TRUE(p.eigen_warning.empty()) << p.eigen_warning;
+}
