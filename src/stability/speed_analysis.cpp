@@ -364,6 +364,7 @@ CriticalSpeedResult find_critical_speed(const Model& model, const Eigen::VectorX
         SpeedStability at_zero(model, r.at_critical.equilibrium.state,
                                r.at_critical.speed_m_per_s, options.stability);
         StabilityPoint p = at_zero.at(r.critical_speed_m_per_s);
+        release_state_matrix(p);
         report(p);
         if (p.least_stable >= 0) r.at_critical = std::move(p);
       } catch (const std::runtime_error&) {
