@@ -42,6 +42,12 @@ template <class T> using ParameterScalar = typename ParameterScalarOf<T>::type;
 template <class T> using Vec3 = Eigen::Matrix<T, 3, 1>;
 template <class T> using Mat3 = Eigen::Matrix<T, 3, 3>;
 template <class T> using VecX = Eigen::Matrix<T, Eigen::Dynamic, 1>;
+// A read-only view of a VecX (or a contiguous segment), with Eigen::Ref's
+// stride spelled out: the default stride argument is an expression of T,
+// and clang 14 numbers the substitutions in the mangled names of function
+// templates taking Ref<const VecX<T>> differently in the defining and the
+// using translation units (explicit instantiations then fail to link).
+template <class T> using VecXConstRef = Eigen::Ref<const VecX<T>, 0, Eigen::InnerStride<1>>;
 
 inline double value_of(double x) { return x; }
 inline double value_of(const AdScalar& x) { return x.value(); }

@@ -8,7 +8,7 @@ namespace railstab {
 template <class T>
 void compute_all_body_motions(const ModelTpl<ParameterScalar<T>>& model, Workspace<T>& ws,
                               double t_s, double speed_m_per_s,
-                              const Eigen::Ref<const VecX<T>>& x) {
+                              const VecXConstRef<T>& x) {
   ws.update_frames(model, t_s, speed_m_per_s);
   const int n = model.n_coordinates;
   for (size_t b = 0; b < model.bodies.size(); ++b) {
@@ -30,7 +30,7 @@ void compute_all_body_motions(const ModelTpl<ParameterScalar<T>>& model, Workspa
 
 template <class T>
 void evaluate_rhs(const ModelTpl<ParameterScalar<T>>& model, Workspace<T>& ws, double t_s,
-                  double speed_m_per_s, const Eigen::Ref<const VecX<T>>& x, VecX<T>& xdot,
+                  double speed_m_per_s, const VecXConstRef<T>& x, VecX<T>& xdot,
                   EvaluationDetails* details, ForceSelection forces) {
   const int n = model.n_coordinates;
   const int z0 = model.internal_state_offset();
@@ -111,12 +111,12 @@ Eigen::VectorXd rhs(const Model& model, double speed_m_per_s, double t_s,
 
 #define RAILSTAB_DEFINE_RHS(T)                                                               \
   template void evaluate_rhs<T>(const ModelTpl<ParameterScalar<T>>&, Workspace<T>&, double,  \
-                                double, const Eigen::Ref<const VecX<T>>&, VecX<T>&,          \
+                                double, const VecXConstRef<T>&, VecX<T>&,          \
                                 EvaluationDetails*,                                          \
                                 ForceSelection);                                             \
   template void compute_all_body_motions<T>(const ModelTpl<ParameterScalar<T>>&,             \
                                             Workspace<T>&, double, double,                   \
-                                            const Eigen::Ref<const VecX<T>>&);
+                                            const VecXConstRef<T>&);
 RAILSTAB_DEFINE_RHS(double)
 RAILSTAB_DEFINE_RHS(AdScalar)
 RAILSTAB_DEFINE_RHS(ParamDual)

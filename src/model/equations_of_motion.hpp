@@ -34,7 +34,7 @@ enum class ForceSelection { all, contact_and_inertia };
 
 template <class T>
 void evaluate_rhs(const ModelTpl<ParameterScalar<T>>& model, Workspace<T>& ws, double t_s,
-                  double speed_m_per_s, const Eigen::Ref<const VecX<T>>& x, VecX<T>& xdot,
+                  double speed_m_per_s, const VecXConstRef<T>& x, VecX<T>& xdot,
                   EvaluationDetails* details = nullptr,
                   ForceSelection forces = ForceSelection::all);
 
@@ -48,7 +48,7 @@ Eigen::VectorXd rhs(const Model& model, double speed_m_per_s, double t_s,
 template <class T>
 void compute_all_body_motions(const ModelTpl<ParameterScalar<T>>& model, Workspace<T>& ws,
                               double t_s, double speed_m_per_s,
-                              const Eigen::Ref<const VecX<T>>& x);
+                              const VecXConstRef<T>& x);
 
 // The two attachments of element e (body 1 may be the track frame of body 2).
 template <class T>
@@ -61,12 +61,12 @@ std::pair<Attachment<T>, Attachment<T>> element_attachments(const ElementEnds& e
 
 #define RAILSTAB_DECLARE_RHS(T)                                                              \
   extern template void evaluate_rhs<T>(const ModelTpl<ParameterScalar<T>>&, Workspace<T>&,   \
-                                       double, double, const Eigen::Ref<const VecX<T>>&,     \
+                                       double, double, const VecXConstRef<T>&,     \
                                        VecX<T>&,                                             \
                                        EvaluationDetails*, ForceSelection);                  \
   extern template void compute_all_body_motions<T>(const ModelTpl<ParameterScalar<T>>&,      \
                                                    Workspace<T>&, double, double,            \
-                                                   const Eigen::Ref<const VecX<T>>&);
+                                                   const VecXConstRef<T>&);
 RAILSTAB_DECLARE_RHS(double)
 RAILSTAB_DECLARE_RHS(AdScalar)
 RAILSTAB_DECLARE_RHS(ParamDual)
