@@ -4,8 +4,9 @@
 # against yaw-damper series stiffness").
 #
 # For every series stiffness k_s a temporary copy of the scene is made with
-# series_stiffness_N_per_m = k_s (there is no --set option yet), and two
-# limits besides: "plain" (the yaw dampers as line_spring_damper with the
+# series_stiffness_N_per_m = k_s (written before --set and `railstab study`
+# existed; `railstab study --vary elements.<name>.series_stiffness_N_per_m=...`
+# now does the finite values without copies), and two limits besides: "plain" (the yaw dampers as line_spring_damper with the
 # same force-velocity table: k_s = infinity) and "none" (the yaw dampers
 # removed). `railstab critical-speed` runs on each; the critical speed, the
 # hunting frequency and the mode go into plots/coach_yaw_damper_study.csv,

@@ -3,6 +3,7 @@
 #include "contact_geometry/contact_geometry_summary.hpp"
 #include "io/gnuplot.hpp"
 #include "contact_geometry/profile_contact_geometry.hpp"
+#include "cli/set_flag.hpp"
 #include "io/file_names.hpp"
 #include "io/output_set.hpp"
 #include "io/scene_loader.hpp"
@@ -22,6 +23,7 @@ struct ContactGeometryArgs {
   std::string contact;
   std::string out_dir = "out";
   bool plots = true;
+  std::vector<SceneValueSetting> values;  // --set KEY=VALUE
 };
 
 // The contact the command is about: --contact NAME, or the scene's only
@@ -53,7 +55,7 @@ void run_contact_geometry(const ContactGeometryArgs& a) {
   if (a.plots) require_gnuplot();  // before the work, not after it
   // The scene loader's own contact reader (the same keys, checks and
   // messages as in a scene), for a whole scene or a file of contacts alone.
-  const std::vector<ContactSpec> contacts = load_scene_contacts(a.scene);
+  const std::vector<ContactSpec> contacts = load_scene_contacts(a.scene, a.values);
   const ContactSpec& spec = chosen_profile_contact(contacts, a);
   const ProfilePair& pair = spec.profile_geometry->pair;
   const ContactGeometrySummary summary = summarise_contact_geometry(pair);
@@ -96,6 +98,7 @@ void register_contact_geometry_command(CLI::App& app) {
                   "name of the contact (default: the only one with geometry = \"profiles\")");
   cmd->add_option("--out", a->out_dir, "output directory")->capture_default_str();
   cmd->add_flag("!--no-plots", a->plots, "do not run gnuplot (CSV and JSON only)");
+  add_set_flag(cmd, a->values);
   cmd->callback([a] { run_contact_geometry(*a); });
 }
 

@@ -24,6 +24,7 @@
 //   6. public API
 #include "io/scene_loader.hpp"
 
+
 #include "contact_geometry/profile_contact_geometry.hpp"
 #include "io/regular_file.hpp"
 #include "scene/physical_ranges.hpp"
@@ -1633,13 +1634,15 @@ SceneSpec load_scene_file(const std::string& path) {
   return parse_scene(text, path);
 }
 
-std::vector<ContactSpec> load_scene_contacts(const std::string& path) {
+std::vector<ContactSpec> load_scene_contacts(const std::string& path,
+                                             const std::vector<SceneValueSetting>& settings) {
   std::string text;
   try {
     text = read_regular_file(path);
   } catch (const std::runtime_error& e) {
     throw SceneError(path + ": scene file: " + e.what());
   }
+  if (!settings.empty()) text = scene_text_with_values(text, path, settings);
   const toml::table root = parse_toml(text, path);
   const TableReader top(root, "", path,
                         {"scene", "track", "contacts", "bodies", "elements", "simulation"});

@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "io/scene_set_values.hpp"
 #include "scene/scene_spec.hpp"
 
 namespace railstab {
@@ -26,8 +27,10 @@ SceneSpec load_scene_file(const std::string& path);
 // holds contacts alone (e.g. cases/s1002_uic60_contact.toml), each validated
 // as in a scene (profile contacts with their files read and their tables
 // built). The other sections are neither read nor checked: for commands
-// about a contact (contact-geometry).
-std::vector<ContactSpec> load_scene_contacts(const std::string& path);
+// about a contact (contact-geometry). `settings`: --set values applied to
+// the file's text first (io/scene_set_values.hpp).
+std::vector<ContactSpec> load_scene_contacts(const std::string& path,
+                                             const std::vector<SceneValueSetting>& settings = {});
 
 // Parses TOML text and validates the result; `source_name` (usually the file
 // path) prefixes every message and becomes SceneSpec::source_path.

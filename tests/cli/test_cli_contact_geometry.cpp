@@ -112,3 +112,33 @@ TEST(CliContactGeometry, HostileSceneNameIsQuotedAndStalePlotsAreRemoved) {
   EXPECT_EQ(left, 0);
   fs::remove_all(dir);
 }
+
+// --set on contact-geometry changes the contact as an edited file would: a
+// gauge 2 mm wider (1.437 m) reaches the JSON and lowers the equivalent
+// conicity at 3 mm (the wheels sit further from the flange); a key the
+// contact does not have is refused naming --set and the key.
+TEST(CliContactGeometry, SetOverridesTheContactsValues) {
+  const fs::path dir = fresh_dir("set");
+  const std::string scene = std::string(RAILSTAB_CASES_DIR) + "/s1002_uic60_contact.toml";
+  const auto base = run_railstab({"contact-geometry", scene, "--no-plots", "--out", "a"}, dir);
+  ASSERT_EQ(base.exit_code, 0) << base.output;
+  const auto wide = run_railstab({"contact-geometry", scene, "--no-plots", "--out", "b", "--set",
+                                  "contacts.s1002_uic60.track_gauge_m=1.437"},
+                                 dir);
+  ASSERT_EQ(wide.exit_code, 0) << wide.output;
+  std::ifstream in(dir / "b/s1002_uic60_contact_s1002_uic60.json");
+  std::stringstream json;
+  json << in.rdbuf();
+  EXPECT_NE(json.str().find("\"track_gauge_m\": 1.437"), std::string::npos) << json.str();
+  auto conicity = [](const std::string& line) {
+    return std::stod(line.substr(line.find(':') + 1));
+  };
+  EXPECT_LT(conicity(conicity_line(wide.output)), conicity(conicity_line(base.output)));
+  const auto bad = run_railstab({"contact-geometry", scene, "--no-plots", "--out", "c", "--set",
+                                 "contacts.nope.track_gauge_m=1.437"},
+                                dir);
+  EXPECT_NE(bad.exit_code, 0);
+  EXPECT_NE(bad.output.find("--set contacts.nope.track_gauge_m"), std::string::npos) << bad.output;
+  EXPECT_FALSE(fs::exists(dir / "c"));
+  fs::remove_all(dir);
+}
