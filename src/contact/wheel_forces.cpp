@@ -34,10 +34,12 @@ std::string WheelForces::name(const Model& model) const {
 
 std::vector<WheelForces> wheel_forces(const Model& model, double speed_m_per_s, double t_s,
                                       const Eigen::VectorXd& x) {
+  // One evaluation gives the contacts and leaves every body's motion (its
+  // frame rotations) in the workspace.
   EvaluationDetails details;
-  rhs(model, speed_m_per_s, t_s, x, &details);
   Workspace<double> ws(model);
-  compute_all_body_motions<double>(model, ws, t_s, speed_m_per_s, x);
+  Eigen::VectorXd xdot;
+  evaluate_rhs<double>(model, ws, t_s, speed_m_per_s, x, xdot, &details);
   std::vector<WheelForces> wheels;
   auto wheel_of = [&](int body, int side) -> WheelForces& {
     for (WheelForces& w : wheels)

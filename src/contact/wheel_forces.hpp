@@ -45,7 +45,8 @@ struct WheelForces {
   std::string name(const Model& model) const;  // "wheelset1 right wheel"
 };
 
-// All wheels of all wheelsets at (t, V, x); throws what rhs() throws.
+// All wheels of all wheelsets at (t, V, x); throws what the model's
+// evaluation throws (evaluate_rhs).
 std::vector<WheelForces> wheel_forces(const Model& model, double speed_m_per_s, double t_s,
                                       const Eigen::VectorXd& x);
 

@@ -41,6 +41,15 @@ std::vector<int> equation_rows(const Model& model, const std::vector<int>& only_
   return rows;
 }
 
+// The state with every velocity zeroed except the spin rates: at rest
+// relative to the track frames, as at an equilibrium.
+Eigen::VectorXd with_zero_relative_velocities(const Model& model, Eigen::VectorXd x) {
+  const int n = model.n_coordinates;
+  for (int k = 0; k < n; ++k)
+    if (!is_spin_angle(model, k)) x(n + k) = 0.0;
+  return x;
+}
+
 }  // namespace
 
 RhsJacobianPlan equilibrium_jacobian_plan(const Model& model,
@@ -97,7 +106,6 @@ EquilibriumResult newton_equilibrium(const Model& model, double speed_m_per_s,
                                      const std::vector<int>& unknowns,
                                      const std::vector<int>& rows,
                                      const RhsJacobianPlan& jacobian_plan) {
-  const int n = model.n_coordinates;
   const double t = options.time_s;
   const double V = speed_m_per_s;
   const int m = int(unknowns.size());
@@ -107,10 +115,7 @@ EquilibriumResult newton_equilibrium(const Model& model, double speed_m_per_s,
     for (int i = 0; i < m; ++i) r(i) = xdot(rows[i]);
     return r;
   };
-  Eigen::VectorXd x = guess;
-  // Velocities other than spin rates are zero at an equilibrium.
-  for (int k = 0; k < n; ++k)
-    if (!is_spin_angle(model, k)) x(n + k) = 0.0;
+  Eigen::VectorXd x = with_zero_relative_velocities(model, guess);
 
   EquilibriumResult result;
   // Errors of the model at an accepted iterate end the solve; the iterate
@@ -242,11 +247,8 @@ EquilibriumResult solve_equilibrium(const Model& model, double speed_m_per_s,
     PseudoTransientOptions pto;
     pto.time_s = options.time_s;
     pto.tolerance = std::max(options.acceleration_tolerance, 1e-6);
-    Eigen::VectorXd start = guess;
-    const int n = model.n_coordinates;
-    for (int k = 0; k < n; ++k)
-      if (!is_spin_angle(model, k)) start(n + k) = 0.0;
-    const PseudoTransientResult settled = settle_by_pseudo_transient(model, speed_m_per_s, start, pto);
+    const PseudoTransientResult settled = settle_by_pseudo_transient(
+        model, speed_m_per_s, with_zero_relative_velocities(model, guess), pto);
     if (settled.converged) {
       try {
         EquilibriumResult polished = newton_equilibrium(model, speed_m_per_s, settled.state, options,

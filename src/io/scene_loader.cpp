@@ -1593,10 +1593,26 @@ class SceneChecker {
 // 6. Public API
 // ============================================================================
 
+namespace {
+// The sections of a scene file (parse_scene reads them all,
+// load_scene_contacts only [contacts]).
+const std::vector<std::string_view> kSceneSections = {"scene",    "track",      "contacts", "bodies",
+                                                      "elements", "simulation", "train"};
+}  // namespace
+
+std::string read_scene_text(const std::string& path) {
+  // A named pipe, a folder or a device is refused before anything is read
+  // (io/regular_file.hpp): a FIFO used to hang here.
+  try {
+    return read_regular_file(path);
+  } catch (const std::runtime_error& e) {
+    throw SceneError(path + ": scene file: " + e.what());
+  }
+}
+
 SceneSpec parse_scene(const std::string& toml_text, const std::string& source_name) {
   const toml::table root = parse_toml(toml_text, source_name);
-  const TableReader top(root, "", source_name,
-                        {"scene", "track", "contacts", "bodies", "elements", "simulation", "train"});
+  const TableReader top(root, "", source_name, kSceneSections);
   SceneSpec scene;
   scene.source_path = source_name;
   read_scene_section(top.table("scene", {"name", "speed_m_per_s", "gravity_m_per_s2",
@@ -1623,29 +1639,15 @@ SceneSpec parse_scene(const std::string& toml_text, const std::string& source_na
 }
 
 SceneSpec load_scene_file(const std::string& path) {
-  // A named pipe, a folder or a device is refused before anything is read
-  // (io/regular_file.hpp): a FIFO used to hang here.
-  std::string text;
-  try {
-    text = read_regular_file(path);
-  } catch (const std::runtime_error& e) {
-    throw SceneError(path + ": scene file: " + e.what());
-  }
-  return parse_scene(text, path);
+  return parse_scene(read_scene_text(path), path);
 }
 
 std::vector<ContactSpec> load_scene_contacts(const std::string& path,
                                              const std::vector<SceneValueSetting>& settings) {
-  std::string text;
-  try {
-    text = read_regular_file(path);
-  } catch (const std::runtime_error& e) {
-    throw SceneError(path + ": scene file: " + e.what());
-  }
+  std::string text = read_scene_text(path);
   if (!settings.empty()) text = scene_text_with_values(text, path, settings);
   const toml::table root = parse_toml(text, path);
-  const TableReader top(root, "", path,
-                        {"scene", "track", "contacts", "bodies", "elements", "simulation"});
+  const TableReader top(root, "", path, kSceneSections);
   return read_contacts(top);
 }
 

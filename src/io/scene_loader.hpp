@@ -20,6 +20,10 @@ struct SceneError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The text of a scene file; a file that cannot be read, or is not a regular
+// file (a pipe, a folder), is a SceneError "<path>: scene file: ...".
+std::string read_scene_text(const std::string& path);
+
 // Reads the file, parses it and validates the result.
 SceneSpec load_scene_file(const std::string& path);
 

@@ -1,6 +1,5 @@
 #include "io/scene_set_values.hpp"
 
-#include "io/regular_file.hpp"
 #include "io/scene_loader.hpp"
 
 #include <toml++/toml.h>
@@ -264,13 +263,7 @@ std::string scene_text_with_values(const std::string& toml_text, const std::stri
 
 SceneSpec load_scene_file(const std::string& path, const std::vector<SceneValueSetting>& settings) {
   if (settings.empty()) return load_scene_file(path);
-  std::string text;
-  try {
-    text = read_regular_file(path);
-  } catch (const std::runtime_error& e) {
-    throw SceneError(path + ": scene file: " + e.what());
-  }
-  const std::string changed = scene_text_with_values(text, path, settings);
+  const std::string changed = scene_text_with_values(read_scene_text(path), path, settings);
   try {
     return parse_scene(changed, path);
   } catch (const SceneError& e) {

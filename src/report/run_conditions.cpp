@@ -123,16 +123,21 @@ RunConditions run_conditions(const Model& model) {
   return c;
 }
 
+namespace {
+// "" on the tangent, "_arc<s>m" (whole metres) otherwise.
+std::string arc_tag(bool tangent, double reference_arc_length_m) {
+  if (tangent) return "";
+  return "_arc" + std::to_string(std::lround(reference_arc_length_m)) + "m";
+}
+}  // namespace
+
 std::string run_file_tag(const RunConditions& c) {
-  if (c.tangent) return "";
-  return "_arc" + std::to_string(std::lround(c.reference_arc_length_m)) + "m";
+  return arc_tag(c.tangent, c.reference_arc_length_m);
 }
 
+// Not through run_conditions(): naming needs no hash of the scene file.
 std::string steady_state_file_stem(const Model& model) {
-  std::string stem = file_stem(model.name);
-  if (!all_bodies_on_tangent(model))
-    stem += "_arc" + std::to_string(std::lround(model.reference_arc_length_m)) + "m";
-  return stem;
+  return file_stem(model.name) + arc_tag(all_bodies_on_tangent(model), model.reference_arc_length_m);
 }
 
 void write_conditions_json(JsonWriter& j, const RunConditions& c,

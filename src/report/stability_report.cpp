@@ -280,7 +280,7 @@ void write_mode_json(JsonWriter& j, const ModeReport& m) {
 }
 
 void write_json(std::ostream& out, const Model& model, const CriticalSpeedResult& r,
-                const std::string& solver, double max_hz) {
+                const RunConditions& conditions, const std::string& solver, double max_hz) {
   {
     JsonWriter j(out);
     j.begin_object().field("scene", model.name).field("source", model.source_path);
@@ -289,7 +289,7 @@ void write_json(std::ostream& out, const Model& model, const CriticalSpeedResult
     // the tolerances of the search.
     std::vector<double> speeds;
     for (const StabilityPoint& p : r.grid) speeds.push_back(p.speed_m_per_s);
-    write_conditions_json(j, run_conditions(model), speeds);
+    write_conditions_json(j, conditions, speeds);
     j.field("eigen_solver", solver)
         .field("hunting_band_hz", max_hz)
         .field("speed_tolerance_requested_m_s", r.requested_tolerance_m_per_s)
@@ -391,7 +391,8 @@ void write_json(std::ostream& out, const Model& model, const CriticalSpeedResult
 }
 
 void write_markdown(std::ostream& md_out, const Model& model, const CriticalSpeedResult& r,
-                    const std::string& solver, const StabilityFiles& files) {
+                    const RunConditions& conditions, const std::string& solver,
+                    const StabilityFiles& files) {
   auto rel = [&](const std::string& f) { return f; };  // names in the same folder
   {
     std::ostream& md = md_out;
@@ -403,7 +404,7 @@ void write_markdown(std::ostream& md_out, const Model& model, const CriticalSpee
        << " cyclic coordinates, eigen-solver " << solver << ", speeds bracketed to "
        << r.requested_tolerance_m_per_s << " m/s, steady states to "
        << EquilibriumOptions{}.acceleration_tolerance << " m/s^2.\n\n"
-       << conditions_markdown(run_conditions(model)) << "\n";
+       << conditions_markdown(conditions) << "\n";
     if (r.partial)
       md << "**Partial result**: the run could not finish what was asked; what it found is "
             "below. Reason: "
@@ -468,7 +469,6 @@ void write_markdown(std::ostream& md_out, const Model& model, const CriticalSpee
         break;
       }
     // In a curve, the cant deficiency at each speed (report/run_conditions.hpp).
-    const RunConditions conditions = run_conditions(model);
     const bool curve = !conditions.tangent;
     md << "\nLeast damped mode by speed (smallest damping ratio in the hunting band):\n\n"
           "| speed [m/s] | "
@@ -509,19 +509,22 @@ StabilityFiles write_stability_results(const Model& model, const CriticalSpeedRe
   for (const std::string& name : stability_file_names(stem)) outputs.replaces(name);
   StabilityFiles files;
   const auto ids = track_modes(result.grid);
+  // Where and how, stated alike in the JSON and the Markdown.
+  const RunConditions conditions = run_conditions(model);
   files.csv = stem + "_eigenvalues.csv";
   outputs.write(files.csv, [&](std::ostream& out) { write_eigenvalue_csv(out, result, ids); });
   files.json = stem + "_critical_speed.json";
   outputs.write(files.json,
                 [&](std::ostream& out) {
-                  write_json(out, model, result, eigen_solver_name, max_plot_frequency_hz);
+                  write_json(out, model, result, conditions, eigen_solver_name,
+                             max_plot_frequency_hz);
                 });
   if (plots)
     files.plots = {stem + "_root_locus.png", stem + "_damping_vs_speed.png",
                    stem + "_frequency_vs_speed.png"};
   files.markdown = stem + "_critical_speed.md";
   outputs.write(files.markdown, [&](std::ostream& out) {
-    write_markdown(out, model, result, eigen_solver_name, files);
+    write_markdown(out, model, result, conditions, eigen_solver_name, files);
   });
   if (plots) {
     const std::string tracks = stem + "_tracks.dat";

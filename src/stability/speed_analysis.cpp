@@ -81,15 +81,12 @@ EquilibriumResult SpeedStability::steady_state_at(double speed_m_per_s) {
   newton.time_s = options_.time_s;
   newton.jacobian_plan = &equilibrium_plan_;
   newton.pseudo_transient_fallback = false;
-  try {
-    return solve_equilibrium(model_, speed_m_per_s,
-                             guess_at(last_equilibrium_, last_speed_, speed_m_per_s), newton);
-  } catch (const EquilibriumError&) {
-  }
+  // The whole step first, then halved steps (each success moves `from` on).
   double from = last_speed_;
   Eigen::VectorXd x = last_equilibrium_;
-  double step = 0.5 * (speed_m_per_s - from);
-  for (int halvings = 1; from > 0.0 && halvings <= 6;) {
+  double step = speed_m_per_s - from;
+  const int max_halvings = from > 0.0 ? 6 : 0;
+  for (int halvings = 0; halvings <= max_halvings;) {
     const bool last = std::abs(speed_m_per_s - from) <= std::abs(step);
     const double next = last ? speed_m_per_s : from + step;
     try {
