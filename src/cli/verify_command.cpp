@@ -74,7 +74,8 @@ void register_verify_command(CLI::App& app) {
                   "arc length (m) of the reference point at t = 0")
       ->check(finite_in(flag_ranges::arc_length_m));
   cmd->add_option("--amplitude", a->options.amplitude_m,
-                  "initial lateral amplitude (m) of the body that moves most laterally")
+                  "initial lateral amplitude (m) of the body that moves most laterally (with "
+                  "--any-mode: of the fitted coordinate, in its unit)")
       ->capture_default_str()
       ->check(finite_in(flag_ranges::amplitude_m));
   cmd->add_option("--periods", a->options.periods,
@@ -85,6 +86,9 @@ void register_verify_command(CLI::App& app) {
                   "periods skipped before the fit window")
       ->capture_default_str()
       ->check(finite_in(flag_ranges::settle_periods));
+  cmd->add_flag("!--any-mode", a->options.lateral_modes_only,
+                "fit the least stable oscillatory mode of any kind (e.g. a wheelset spin mode "
+                "in a curve), on the coordinate with the largest share of its kinetic energy");
   cmd->add_flag("--scene-offsets", a->scene_offsets,
                 "start from the scene's initial offsets and rates instead of the mode "
                 "perturbation (e.g. the thesis cases' 1 mm offset of wheelset1)");

@@ -45,6 +45,10 @@ std::string verdict_sentence(const CriticalSpeedResult& r) {
     case StabilityVerdict::critical_speed_found:
       s << "critical speed " << std::fixed << std::setprecision(2) << r.critical_speed_m_per_s
         << " m/s";
+      if (r.loss.kind == LossOfStabilityKind::jump)
+        s << " (stability lost by a jump of the steady state, no eigenvalue crosses)";
+      else if (r.loss.kind == LossOfStabilityKind::aperiodic_crossing)
+        s << " (a real eigenvalue crosses zero: divergence or the fold of the steady state)";
       break;
     case StabilityVerdict::stable_in_range:
       s << "stable over the whole range " << r.from_m_per_s << " - " << r.to_m_per_s << " m/s";
@@ -312,6 +316,15 @@ void write_json(std::ostream& out, const Model& model, const CriticalSpeedResult
           .field("frequency_hz", m.frequency_hz)
           .field("damping_ratio", m.damping_ratio)
           .field("mode", m.name);
+      j.key("loss_of_stability").begin_object();
+      j.field("kind", loss_of_stability_key(r.loss.kind))
+          .field("description", describe_loss_of_stability(r.loss))
+          .field("stable_side_m_s", r.loss.stable_speed_m_per_s)
+          .field("unstable_side_m_s", r.loss.unstable_speed_m_per_s)
+          .field("max_real_part_stable_side_per_s", r.loss.stable_max_real_part_per_s)
+          .field("max_real_part_unstable_side_per_s", r.loss.unstable_max_real_part_per_s)
+          .field("steady_state_largest_translation_change_m", r.loss.largest_translation_change_m);
+      j.end_object();
       const std::vector<ModeShape> shapes = full_mode_shapes(model, r.at_critical);
       j.key("mode_shape").begin_object();
       write_mode_json(j, m);
@@ -445,7 +458,8 @@ void write_markdown(std::ostream& md_out, const Model& model, const CriticalSpee
          << " m |\n"
          << "| damping ratio at " << r.at_critical.speed_m_per_s << " m/s | " << m.damping_ratio
          << " |\n"
-         << "| mode | " << md_text(m.name) << " |\n\n";
+         << "| mode | " << md_text(m.name) << " |\n"
+         << "| loss of stability | " << md_text(describe_loss_of_stability(r.loss)) << " |\n\n";
       write_mode_shape_markdown(
           md, model, full_mode_shapes(model, r.at_critical)[size_t(r.at_critical.least_stable)]);
       md << std::setprecision(4);
@@ -549,6 +563,8 @@ void print_critical_speed_summary(std::ostream& out, const Model& model,
         << r.critical_speed_m_per_s << " m/s (" << r.critical_speed_m_per_s * 3.6 << " km/h)"
         << std::defaultfloat << std::setprecision(5) << ", frequency " << m.frequency_hz
         << " Hz, mode " << m.name << "\n";
+    if (r.loss.kind != LossOfStabilityKind::oscillatory_crossing)
+      out << "loss of stability: " << describe_loss_of_stability(r.loss) << "\n";
   }
   if (r.damping_limit_found) {
     out << "damping ratio below " << r.min_damping_ratio << " from " << std::fixed

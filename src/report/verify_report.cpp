@@ -73,7 +73,7 @@ void write_verification_plot(const VerificationResult& r, OutputSet& outputs,
     gp << "# Run from the output folder: gnuplot " << script << "\n"
        << "set terminal pngcairo size 900,480 font 'Sans,10' noenhanced\nset output "
        << gnuplot_text(png) << "\nset grid\nset xlabel 'time [s]'\nset ylabel "
-       << gnuplot_text(r.signal + " - equilibrium [mm]") << "\n"
+       << gnuplot_text(r.signal + " - equilibrium (x 1000: mm, mrad)") << "\n"
        << "set title " << gnuplot_text(title.str()) << "\n"
        << "plot " << gnuplot_path(data) << " using 1:2 with lines lw 2 title 'nonlinear time "
        << "domain', " << gnuplot_path(data)
@@ -86,7 +86,7 @@ void write_verification_plot(const VerificationResult& r, OutputSet& outputs,
 void print_verification_summary(std::ostream& out, const Model& model,
                                 const VerificationResult& r) {
   out << std::setprecision(6) << model.name << " at " << r.speed_m_per_s
-      << " m/s, least stable lateral mode: " << r.mode_name << " (signal " << r.signal << ")\n"
+      << " m/s, least stable mode: " << r.mode_name << " (signal " << r.signal << ")\n"
       << "                 real part [1/s]   frequency [Hz]\n"
       << "  eigenvalue     " << std::setw(15) << r.eigen_real_per_s << std::setw(17)
       << r.eigen_frequency_hz << "\n"

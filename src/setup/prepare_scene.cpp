@@ -2,6 +2,7 @@
 
 #include "io/scene_loader.hpp"
 #include "model/equations_of_motion.hpp"
+#include "equilibrium/speed_continuation.hpp"
 #include "setup/model_error_context.hpp"
 
 #include <algorithm>
@@ -57,11 +58,49 @@ PreparedScene prepare_scene(const std::string& path, const SceneOverrides& overr
   return prepare_scene(load_scene_with_overrides(path, overrides));
 }
 
+namespace {
+
+// Where the steady state at V cannot be found from the nominal position
+// (Newton and the pseudo-transient fallback fail, e.g. steady curving on
+// real profiles at high cant deficiency), it is followed up in speed as a
+// sweep does: from kRampStartSpeed in steps of kRampStep, each continued with
+// halvings (equilibrium/speed_continuation.hpp). Defaults of critical-speed.
+constexpr double kRampStartSpeed_m_per_s = 5.0;
+constexpr double kRampStep_m_per_s = 2.5;
+
+EquilibriumResult steady_state_by_speed_ramp(const Model& model, double V,
+                                             const EquilibriumError& direct) {
+  double v = kRampStartSpeed_m_per_s;
+  EquilibriumResult eq;
+  try {
+    eq = solve_equilibrium(model, v, lowered_nominal_state(model, v));
+    while (v < V) {
+      const double next = std::min(V, v + kRampStep_m_per_s);
+      eq = continue_equilibrium_in_speed(model, v, eq.state, next, EquilibriumOptions{});
+      v = next;
+    }
+  } catch (const EquilibriumError& e) {
+    throw EquilibriumError(std::string(direct.what()) +
+                               "; following the steady state up in speed from " +
+                               number_text(kRampStartSpeed_m_per_s) + " m/s stopped at " +
+                               number_text(v) + " m/s: " + e.what(),
+                           direct.last_state, direct.worst_state);
+  }
+  return eq;
+}
+
+}  // namespace
+
 PreparedScene prepare_scene(SceneSpec spec) {
   Model model = build_model(spec);
   const double V = spec.speed_m_per_s;
   EquilibriumResult eq = with_model_context(model, {"steady state at t = 0", V}, [&] {
-    return solve_equilibrium(model, V, lowered_nominal_state(model, V));
+    try {
+      return solve_equilibrium(model, V, lowered_nominal_state(model, V));
+    } catch (const EquilibriumError& direct) {
+      if (!(V > kRampStartSpeed_m_per_s)) throw;
+      return steady_state_by_speed_ramp(model, V, direct);
+    }
   });
   return PreparedScene{std::move(spec), std::move(model), V, std::move(eq)};
 }

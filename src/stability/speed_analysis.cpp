@@ -354,7 +354,7 @@ CriticalSpeedResult find_critical_speed(const Model& model, const Eigen::VectorX
     // The modes (hunting frequency, mode shape) at the critical speed itself,
     // one more evaluation from the stable side's steady state; where that
     // speed has none, the stable side of the bracket.
-    r.at_critical = std::move(b.lo);
+    r.at_critical = b.lo;
     if (r.critical_speed_m_per_s > r.at_critical.speed_m_per_s &&
         r.critical_speed_m_per_s < b.hi.speed_m_per_s) {
       try {
@@ -368,10 +368,16 @@ CriticalSpeedResult find_critical_speed(const Model& model, const Eigen::VectorX
       }
     }
     r.critical_speed_found = true;
+    r.loss = classify_loss_of_stability(model, r.grid[crossing - 1], r.grid[crossing], b.lo, b.hi,
+                                        r.at_critical);
+    // No eigenvalue crossed: the modes worth showing are the unstable side's.
+    if (r.loss.kind == LossOfStabilityKind::jump) r.at_critical = std::move(b.hi);
   }
   if (options.min_damping_ratio > 0.0) find_damping_limit(model, options, r, report);
   name_tracked_modes(r.grid, track_modes(r.grid));
   if (r.critical_speed_found || r.unstable_at_start) inherit_mode_names(r.at_critical, r.grid);
+  if (r.loss.kind == LossOfStabilityKind::jump && r.at_critical.least_stable >= 0)
+    r.loss.unstable_mode = r.at_critical.modes[size_t(r.at_critical.least_stable)].name;
   if (r.damping_limit_found || r.damping_below_at_start)
     inherit_mode_names(r.at_damping_limit, r.grid);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

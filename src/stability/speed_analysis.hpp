@@ -5,6 +5,7 @@
 // critical (hunting) speed where that mode's real part crosses zero.
 #include "equilibrium/equilibrium.hpp"
 #include "linear/linearization.hpp"
+#include "stability/loss_of_stability.hpp"
 #include "stability/modes.hpp"
 
 #include <complex>
@@ -107,6 +108,10 @@ struct CriticalSpeedResult {
   // the stable side of the final bracket where that speed has no steady
   // state. at_critical.speed_m_per_s says which.
   StabilityPoint at_critical;
+  // How the stability is lost there (stability/loss_of_stability.hpp): an
+  // oscillatory or aperiodic crossing, or a jump of the steady state (then
+  // at_critical is the unstable side of the final bracket).
+  LossOfStability loss;
   // Damping-ratio criterion (CriticalSpeedOptions::min_damping_ratio): the
   // lowest speed where the least damped mode's ratio falls below the limit,
   // bisected like the critical speed on (smallest ratio - limit).

@@ -2,6 +2,7 @@
 
 #include "stability/speed_analysis.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -29,6 +30,22 @@ int lateral_signal_state(const Model& model, const LinearModel& lin, const Eigen
   }
   if (signal < 0) throw std::runtime_error("verify: the chosen mode moves no body laterally");
   return signal;
+}
+
+// Any mode: the coordinate with the largest kinetic-energy share; its
+// position state where the linear model keeps it, else its rate.
+int dominant_signal_state(const Model& model, const LinearModel& lin, const ModeReport& mode) {
+  auto kept = [&](int k) {
+    return std::find(lin.kept_states.begin(), lin.kept_states.end(), k) != lin.kept_states.end();
+  };
+  for (const Participation& p : mode.participation)
+    for (int k = 0; k < model.n_coordinates; ++k) {
+      const auto [b, c] = model.coordinate_of_state[size_t(k)];
+      if (c != p.coordinate || model.bodies[size_t(b)].name != p.body) continue;
+      if (kept(k)) return k;
+      if (kept(k + model.n_coordinates)) return k + model.n_coordinates;
+    }
+  throw std::runtime_error("verify: the chosen mode moves no coordinate of the linear model");
 }
 
 // Perturbation of the full state along the mode, rotated so the signal's
@@ -64,17 +81,24 @@ VerificationResult verify_least_stable_mode(const Model& model, double speed_m_p
   // mode (e.g. bogie longitudinal on the thesis vehicle at 100 m/s) may be
   // less damped but moves no wheelset laterally, so it cannot be fitted on
   // a lateral signal.
-  const int chosen = least_stable_lateral_mode(point.modes, options.hunting_band_hz);
+  const int chosen = options.lateral_modes_only
+                         ? least_stable_lateral_mode(point.modes, options.hunting_band_hz)
+                         : least_stable_lateral_mode(point.modes, options.hunting_band_hz, 0.0);
   if (chosen < 0)
-    throw std::runtime_error("verify: no oscillatory lateral mode (lateral share >= 0.5) at or below " +
-                             std::to_string(options.hunting_band_hz) + " Hz; nothing to fit");
+    throw std::runtime_error(
+        std::string("verify: no oscillatory ") +
+        (options.lateral_modes_only ? "lateral mode (lateral share >= 0.5)" : "mode") +
+        " at or below " + std::to_string(options.hunting_band_hz) + " Hz; nothing to fit" +
+        (options.lateral_modes_only ? " (--any-mode fits the least stable mode of any kind)" : ""));
   const ModeReport& mode = point.modes[size_t(chosen)];
   out.eigenvalue = mode.eigenvalue;
   out.mode_name = mode.name;
   out.eigen_real_per_s = mode.eigenvalue.real();
   out.eigen_frequency_hz = mode.frequency_hz;
 
-  const int signal_state = lateral_signal_state(model, point.linear, mode.vector);
+  const int signal_state = options.lateral_modes_only
+                               ? lateral_signal_state(model, point.linear, mode.vector)
+                               : dominant_signal_state(model, point.linear, mode);
   const Eigen::VectorXd dx =
       mode_perturbation(model, point.linear, mode.vector, signal_state, options.amplitude_m);
   out.signal = model.state_name(signal_state);

@@ -16,7 +16,7 @@
 namespace railstab {
 
 struct VerificationOptions {
-  double amplitude_m = 1e-4;    // largest lateral displacement of any body at t = 0
+  double amplitude_m = 1e-4;    // signal's value at t = 0 (lateral modes: largest lateral shift)
   double periods = 15.0;        // simulated length in periods of the mode
   double settle_periods = 2.0;  // skipped before the fit window
   double max_t_end_s = 40.0;
@@ -24,6 +24,14 @@ struct VerificationOptions {
   double relative_tolerance = 1e-7;
   double absolute_tolerance = 1e-11;
   double hunting_band_hz = 20.0;
+  // false: the least stable oscillatory mode in the band whatever its
+  // direction (e.g. a wheelset spin mode in a curve on real profiles), fitted
+  // on the coordinate with the largest share of its kinetic energy (its
+  // position, or its rate where the position is not a state of the linear
+  // model: a wheelset's spin angle); amplitude_m is then in that
+  // coordinate's unit (m, rad or rad/s). true: lateral modes only (share of
+  // lateral-plane kinetic energy >= 0.5), fitted on a lateral shift.
+  bool lateral_modes_only = true;
   // A given start (e.g. the scene's initial offsets on the equilibrium)
   // instead of the perturbation along the mode; the signal is still the
   // lateral shift the mode moves most, fitted after settle_periods.
