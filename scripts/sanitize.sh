@@ -18,7 +18,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 fuzz_seconds=${RAILSTAB_FUZZ_SECONDS:-30}
-long_runs='SteadyCurvingProfiles\.EquilibriumIsWhere|CriticalSpeedSensitivity\.ThesisVehicle|ContactDamping\.VerifyInTheArc|ThesisBogie\.ShiftsOutwardsInCurve|ExtremeConservative|Extreme/ExtremeRun|Verification\.|ErrorEstimate\.|ExtremeNearCritical'
+long_runs='SteadyCurvingProfiles\.EquilibriumIsWhere|CriticalSpeedSensitivity\.ThesisVehicle|ContactDamping\.VerifyInTheArc|ThesisBogie\.ShiftsOutwardsInCurve|ExtremeConservative|Extreme/ExtremeRun|Verification\.|ErrorEstimate\.|ExtremeNearCritical|CurveStabilityProfiles\.(SpinMode|VehicleArc|HighSpeed)|CliVerifyAnyMode'
 timed='ContactTables\.BuildTakesUnderOneSecond|SundialsFlagNames|WorkLimits'
 # Packaging tests (the example program, install + find_package): about the
 # Release build's install tree, not about memory errors; the Release suite
