@@ -52,6 +52,14 @@ void run_sensitivity(const SensitivityArgs& a) {
     throw std::runtime_error(s.spec.source_path + ": no critical speed between " +
                              std::to_string(a.from_m_per_s) + " and " + std::to_string(a.to_m_per_s) +
                              " m/s (--from/--to): there is no stability boundary to differentiate");
+  // The implicit function theorem needs an eigenvalue that crosses the
+  // imaginary axis continuously (stability/loss_of_stability.hpp).
+  if (r.loss.kind != LossOfStabilityKind::oscillatory_crossing)
+    throw std::runtime_error(
+        s.spec.source_path + ": at " + std::to_string(r.critical_speed_m_per_s) +
+        " m/s the stability is lost by " + describe_loss_of_stability(r.loss) +
+        "; dVc/dp (implicit function theorem on Re lambda(Vc, p) = 0 for an oscillatory mode) "
+        "is only defined for an oscillatory crossing");
   const ModeReport& mode = r.at_critical.modes[size_t(r.at_critical.least_stable)];
   std::cerr << "critical speed " << r.critical_speed_m_per_s << " m/s; derivatives of "
             << (a.keys.empty() ? known.size() : a.keys.size()) << " parameters\n";

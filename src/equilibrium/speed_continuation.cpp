@@ -2,8 +2,8 @@
 
 #include "core/coordinates.hpp"
 
+#include <algorithm>
 #include <cmath>
-#include <optional>
 
 namespace railstab {
 
@@ -24,11 +24,12 @@ EquilibriumResult continue_equilibrium_in_speed(const Model& model, double from_
                                                 const Eigen::VectorXd& state, double to_m_per_s,
                                                 EquilibriumOptions options, int max_halvings) {
   options.pseudo_transient_fallback = false;
+  const double smallest = std::min(kSmallestSpeedStep_m_per_s,
+                                   std::ldexp(std::abs(to_m_per_s - from_m_per_s), -max_halvings));
   double from = from_m_per_s;
   Eigen::VectorXd x = state;
   double step = to_m_per_s - from;
-  std::optional<EquilibriumError> last_error;
-  for (int halvings = 0; halvings <= max_halvings;) {
+  for (;;) {
     const bool last = std::abs(to_m_per_s - from) <= std::abs(step);
     const double next = last ? to_m_per_s : from + step;
     try {
@@ -36,13 +37,12 @@ EquilibriumResult continue_equilibrium_in_speed(const Model& model, double from_
       if (last) return r;
       x = r.state;
       from = next;
-    } catch (const EquilibriumError& e) {
-      last_error = e;
+      step *= 2.0;  // back up towards the whole step once past the hard part
+    } catch (const EquilibriumError&) {
+      if (std::abs(step) * 0.5 < smallest * (1.0 - 1e-12)) throw;
       step *= 0.5;
-      ++halvings;
     }
   }
-  throw *last_error;
 }
 
 }  // namespace railstab

@@ -17,11 +17,18 @@ Eigen::VectorXd rescaled_to_speed(const Model& model, const Eigen::VectorXd& x,
                                   double from_m_per_s, double to_m_per_s);
 
 // From the steady state `state` at from_m_per_s to to_m_per_s: the whole
-// step first, then halved steps (each success moves on), at most
-// max_halvings halvings in all. `options` as for solve_equilibrium (its
-// pseudo-transient fallback is switched off here: it would leave the
-// branch). Throws EquilibriumError (the last Newton failure) when the
-// halvings run out.
+// step first; a failed step is halved, a successful one moves on and the
+// next step doubles (up to what is left), so a hard stretch costs small
+// steps only where it is hard. Steps never go below the whole distance /
+// 2^max_halvings, or kSmallestSpeedStep_m_per_s if that is smaller (a long
+// way, e.g. from the scene's speed to the start of a sweep, may hold a
+// stretch as hard as a short one: 2.5 m/s / 2^6 = 0.04 m/s is what the
+// sweep's grid steps allow). `options` as for solve_equilibrium (its pseudo-transient
+// fallback is switched off here: it would leave the branch). Throws
+// EquilibriumError (the last Newton failure) when a step would have to be
+// smaller.
+inline constexpr double kSmallestSpeedStep_m_per_s = 0.04;
+
 EquilibriumResult continue_equilibrium_in_speed(const Model& model, double from_m_per_s,
                                                 const Eigen::VectorXd& state, double to_m_per_s,
                                                 EquilibriumOptions options, int max_halvings = 6);

@@ -75,9 +75,11 @@ std::string describe_loss_of_stability(const LossOfStability& loss) {
       s << "a real eigenvalue crosses zero (divergence, or the fold of the steady state)";
       break;
     case LossOfStabilityKind::jump:
+      s.precision(8);  // the bracket may be 1e-6 m/s wide
       s << "a jump of the steady state between " << loss.stable_speed_m_per_s << " and "
-        << loss.unstable_speed_m_per_s << " m/s, not a crossing: the largest real part is "
-        << loss.stable_max_real_part_per_s << " 1/s below and " << loss.unstable_max_real_part_per_s
+        << loss.unstable_speed_m_per_s << " m/s, not a crossing: the largest real part is ";
+      s.precision(4);
+      s << loss.stable_max_real_part_per_s << " 1/s below and " << loss.unstable_max_real_part_per_s
         << " 1/s above (" << loss.unstable_mode;
       if (loss.unstable_eigenvalue.imag() == 0.0) s << ", real eigenvalue";
       s << ")";

@@ -2,6 +2,7 @@
 
 #include "contact/wheel_forces.hpp"
 #include "eigen/band_eigen.hpp"
+#include "equilibrium/speed_continuation.hpp"
 #include "linear/jacobian.hpp"
 #include "setup/model_error_context.hpp"
 
@@ -58,51 +59,26 @@ SpeedStability::SpeedStability(const Model& model, const Eigen::VectorXd& equili
       last_speed_(guess_speed_m_per_s), jacobian_plan_(plan_rhs_jacobian(model)),
       equilibrium_plan_(equilibrium_jacobian_plan(model)) {}
 
-// The last steady state as the guess at another speed (spin rates scaled).
-Eigen::VectorXd SpeedStability::guess_at(const Eigen::VectorXd& x, double from_m_per_s,
-                                         double to_m_per_s) const {
-  Eigen::VectorXd guess = x;
-  const int n = model_.n_coordinates;
-  for (int k = 0; k < n; ++k) {
-    const auto [b, c] = model_.coordinate_of_state[k];
-    if (model_.bodies[b].wheelset() && c == int(CoordinateIndex::pitch) && from_m_per_s > 0.0)
-      guess(n + k) *= to_m_per_s / from_m_per_s;
-  }
-  return guess;
-}
-
-// Natural continuation in speed: Newton from the last steady state; where it
-// fails, the step from the last speed is halved (up to 6 times) so that
-// Newton follows the branch the sweep is on; only then pseudo-transient
-// continuation at the target speed (which converges to whatever steady
-// state the motion leads to, possibly another branch).
+// Natural continuation in speed from the last steady state
+// (equilibrium/speed_continuation.hpp: halved steps where Newton misses, so
+// it follows the branch the sweep is on); only where that fails,
+// pseudo-transient continuation at the target speed (which converges to
+// whatever steady state the motion leads to, possibly another branch).
 EquilibriumResult SpeedStability::steady_state_at(double speed_m_per_s) {
   EquilibriumOptions newton;
   newton.time_s = options_.time_s;
   newton.jacobian_plan = &equilibrium_plan_;
-  newton.pseudo_transient_fallback = false;
-  // The whole step first, then halved steps (each success moves `from` on).
-  double from = last_speed_;
-  Eigen::VectorXd x = last_equilibrium_;
-  double step = speed_m_per_s - from;
-  const int max_halvings = from > 0.0 ? 6 : 0;
-  for (int halvings = 0; halvings <= max_halvings;) {
-    const bool last = std::abs(speed_m_per_s - from) <= std::abs(step);
-    const double next = last ? speed_m_per_s : from + step;
+  if (last_speed_ > 0.0) {
     try {
-      EquilibriumResult r = solve_equilibrium(model_, next, guess_at(x, from, next), newton);
-      if (last) return r;
-      x = r.state;
-      from = next;
+      return continue_equilibrium_in_speed(model_, last_speed_, last_equilibrium_, speed_m_per_s,
+                                           newton);
     } catch (const EquilibriumError&) {
-      step *= 0.5;
-      ++halvings;
     }
   }
   EquilibriumOptions settle = newton;
   settle.pseudo_transient_fallback = true;
   return solve_equilibrium(model_, speed_m_per_s,
-                           guess_at(last_equilibrium_, last_speed_, speed_m_per_s), settle);
+                           rescaled_to_speed(model_, last_equilibrium_, last_speed_, speed_m_per_s), settle);
 }
 
 StabilityPoint SpeedStability::at(double speed_m_per_s) {

@@ -84,7 +84,6 @@ class SpeedStability {
   StabilityPoint at(double speed_m_per_s);
 
  private:
-  Eigen::VectorXd guess_at(const Eigen::VectorXd& x, double from_m_per_s, double to_m_per_s) const;
   EquilibriumResult steady_state_at(double speed_m_per_s);
   const Model& model_;
   StabilityOptions options_;

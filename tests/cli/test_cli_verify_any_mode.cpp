@@ -50,3 +50,23 @@ TEST(CliVerifyAnyMode, FitsTheSpinModeAndTheReportNamesTheCrossing) {
   EXPECT_NE(md.find("| loss of stability | an oscillatory mode crosses"), std::string::npos) << md;
   fs::remove_all(dir);
 }
+
+// dVc/dp needs an eigenvalue that crosses: where the stability is lost by a
+// jump of the steady state (the thesis vehicle in the arc at 47.5 m/s), the
+// sensitivity command says so and writes nothing.
+TEST(CliVerifyAnyMode, SensitivityRefusesAJumpOfTheSteadyState) {
+  const fs::path dir = fs::temp_directory_path() / ("railstab_jump_sens_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string scene = std::string(RAILSTAB_CASES_DIR) + "/thesis_vehicle_s1002_curve.toml";
+  const railstab::test::CliRun run = railstab::test::run_railstab(
+      {"sensitivity", scene, "--set", "scene.reference_arc_length_m=2000", "--from", "45", "--to",
+       "50", "--no-plots", "--out", "o"},
+      dir);
+  EXPECT_NE(run.exit_code, 0) << run.output;
+  EXPECT_NE(run.output.find("jump of the steady state"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("only defined for an oscillatory crossing"), std::string::npos)
+      << run.output;
+  EXPECT_FALSE(fs::exists(dir / "o"));
+  fs::remove_all(dir);
+}
