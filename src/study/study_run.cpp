@@ -63,6 +63,10 @@ StudyPoint run_study_point(const StudyDefinition& d, std::size_t index) {
       }
     }
     if (r.partial) p.message = r.partial_reason;
+    // A critical speed that is not a Hopf crossing is said in the row.
+    if (r.critical_speed_found && r.loss.kind != LossOfStabilityKind::oscillatory_crossing)
+      p.message = "loss of stability: " + describe_loss_of_stability(r.loss) +
+                  (p.message.empty() ? "" : "; " + p.message);
   } catch (const std::exception& e) {
     p = StudyPoint{index, p.values, "error", false, 0.0, 0.0, "", without_function_name(e.what())};
   }
