@@ -90,7 +90,8 @@ class ShiftedSparseLU {
 // the pairs returned are not proven to be the nearest).
 std::vector<EigenPair> nearest_eigenpairs(const Eigen::SparseMatrix<double>& A, double norm_A,
                                           ShiftedSparseLU& lu, Complex sigma, int k,
-                                          double tolerance, bool& all_converged) {
+                                          double tolerance, bool& all_converged,
+                                          ShiftDisc& work) {
   const a_int n = a_int(A.rows());
   const a_int nev = std::min<a_int>(k, n - 2);
   // Basis 3k + 1: the cars' nearly equal modes come in tight clusters, which
@@ -137,6 +138,8 @@ std::vector<EigenPair> nearest_eigenpairs(const Eigen::SparseMatrix<double>& A, 
       throw std::runtime_error("eigen_sparse_band: ARPACK zneupd failed, info = " +
                                std::to_string(info_e));
   }
+  work.restarts = int(iparam[2]);
+  work.operator_applications = int(iparam[8]);
   const int converged = int(std::min<a_int>(iparam[4], nev));
   all_converged = converged >= nev;
   std::vector<EigenPair> pairs;
@@ -180,8 +183,9 @@ BandEigenResult eigen_sparse_band(const Eigen::SparseMatrix<double>& A,
       sigma += Complex(0.0, 1e-7 * top);
     }
     bool all_converged = false;
+    ShiftDisc disc{sigma, 0.0, k};
     std::vector<EigenPair> found =
-        nearest_eigenpairs(A, norm_A, lu, sigma, k, o.tolerance, all_converged);
+        nearest_eigenpairs(A, norm_A, lu, sigma, k, o.tolerance, all_converged, disc);
     double radius = 0.0;
     for (const EigenPair& p : found) radius = std::max(radius, std::abs(p.value - sigma));
     // Fewer than asked converged: nothing is proven (an unconverged one may
@@ -195,7 +199,8 @@ BandEigenResult eigen_sparse_band(const Eigen::SparseMatrix<double>& A,
         if (std::abs(p.value - d.shift) < d.radius) seen = true;
       if (!seen) result.pairs.push_back(std::move(p));
     }
-    result.discs.push_back({sigma, radius, k});
+    disc.radius = radius;
+    result.discs.push_back(disc);
     const double h = radius > half_width ? std::sqrt(radius * radius - half_width * half_width) : 0.0;
     if (h < 0.1 * half_width) {
       // Too few eigenvalues to span the box's width here: ask for more.

@@ -58,6 +58,9 @@ struct ShiftDisc {
   std::complex<double> shift;
   double radius = 0.0;  // every eigenvalue with |lambda - shift| < radius was found
   int eigenvalues = 0;  // k of the solve
+  // ARPACK's work (diagnostics): Arnoldi restarts and applications of OP.
+  int restarts = 0;
+  int operator_applications = 0;
 };
 
 struct BandEigenResult {
