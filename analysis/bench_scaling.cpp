@@ -180,6 +180,21 @@ int profile_run(const std::string& cases_dir, int cars) {
   const CriticalSpeedResult r = find_critical_speed(model, s.equilibrium.state, s.speed_m_per_s,
                                                     twelve_speeds(EigenSolverKind::automatic));
   std::printf("12-speed search %.3f s CPU (%d evaluations)\n", cpu_seconds() - t0, r.evaluations);
+  // A bisection (105..115 m/s, grid 5, tolerance 0.01) with and without
+  // tracking the crossing mode.
+  for (bool track : {false, true}) {
+    CriticalSpeedOptions o = twelve_speeds(EigenSolverKind::automatic);
+    o.from_m_per_s = 105.0;
+    o.tolerance_m_per_s = 0.01;
+    o.track_in_bisection = track;
+    t0 = cpu_seconds();
+    const CriticalSpeedResult b = find_critical_speed(model, s.equilibrium.state, s.speed_m_per_s, o);
+    int tracked = 0;
+    (void)tracked;
+    std::printf("bisection 105..115 m/s, tracking %s: %.3f s CPU, %d evaluations, critical speed "
+                "%.6f m/s\n",
+                track ? "on" : "off", cpu_seconds() - t0, b.evaluations, b.critical_speed_m_per_s);
+  }
   return 0;
 }
 
