@@ -22,7 +22,9 @@
 //                                              (CLI defaults: 5..150 m/s, grid
 //                                              2.5 m/s, tolerance 0.01) for N cars
 //   build/bench_scaling --profile N [cases-dir] stages of one evaluation of
-//                                              N cars at 100 m/s, one 12-speed search
+//                                              N cars at 100 m/s (ARPACK restarts per
+//                                              shift), one 12-speed search, a bisection
+//                                              105..115 m/s with and without tracking
 #include "eigen/band_eigen.hpp"
 #include "eigen/eigen_analysis.hpp"
 #include "equilibrium/equilibrium.hpp"
@@ -189,8 +191,6 @@ int profile_run(const std::string& cases_dir, int cars) {
     o.track_in_bisection = track;
     t0 = cpu_seconds();
     const CriticalSpeedResult b = find_critical_speed(model, s.equilibrium.state, s.speed_m_per_s, o);
-    int tracked = 0;
-    (void)tracked;
     std::printf("bisection 105..115 m/s, tracking %s: %.3f s CPU, %d evaluations, critical speed "
                 "%.6f m/s\n",
                 track ? "on" : "off", cpu_seconds() - t0, b.evaluations, b.critical_speed_m_per_s);
