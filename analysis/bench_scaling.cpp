@@ -21,6 +21,10 @@
 //                                              of one full default-range search
 //                                              (CLI defaults: 5..150 m/s, grid
 //                                              2.5 m/s, tolerance 0.01) for N cars
+//   build/bench_scaling --profile N [cases-dir] stages of one evaluation of
+//                                              N cars at 100 m/s (ARPACK restarts per
+//                                              shift), one 12-speed search, a bisection
+//                                              105..115 m/s with and without tracking
 #include "eigen/band_eigen.hpp"
 #include "eigen/eigen_analysis.hpp"
 #include "equilibrium/equilibrium.hpp"
@@ -134,10 +138,72 @@ int memory_run(const std::string& cases_dir, int cars) {
   return 0;
 }
 
+// Where one evaluation of the N-car train at 100 m/s goes, stage by stage
+// (CPU seconds, each stage once after a warm-up evaluation), and one
+// 12-speed search.
+int profile_run(const std::string& cases_dir, int cars) {
+  const PreparedScene s = prepare_scene(train_scene(cases_dir, cars));
+  const Model& model = s.model;
+  const double V = 100.0;
+  SpeedStability sweep(model, s.equilibrium.state, s.speed_m_per_s);
+  const StabilityPoint warm = sweep.at(V - 5.0);
+  const RhsJacobianPlan plan = plan_rhs_jacobian(model);
+  const RhsJacobianPlan eq_plan = equilibrium_jacobian_plan(model);
+  EquilibriumOptions eq_opt;
+  eq_opt.jacobian_plan = &eq_plan;
+  double t0 = cpu_seconds();
+  const EquilibriumResult eq = solve_equilibrium(model, V, warm.equilibrium.state, eq_opt);
+  const double eq_s = cpu_seconds() - t0;
+  LinearizationOptions lo;
+  lo.jacobian_plan = &plan;
+  lo.sparse = true;
+  t0 = cpu_seconds();
+  const LinearModel lin = linearize(model, V, eq.state, lo);
+  const double lin_s = cpu_seconds() - t0;
+  t0 = cpu_seconds();
+  const BandEigenResult band = eigen_sparse_band(lin.A_sparse, BandCoverOptions{});
+  const double eig_s = cpu_seconds() - t0;
+  t0 = cpu_seconds();
+  const std::vector<ModeReport> modes = describe_modes(model, lin, band.pairs);
+  const double describe_s = cpu_seconds() - t0;
+  t0 = cpu_seconds();
+  const StabilityPoint whole = sweep.at(V);
+  const double at_s = cpu_seconds() - t0;
+  std::printf("N = %d (%d states, %d linear, A: %ld non-zeros): equilibrium from 95 m/s %.4f s "
+              "(%d Newton iterations), linearisation %.4f s, band eigen-solve %.4f s (%zu shifts, "
+              "%zu modes), describe_modes %.4f s; SpeedStability::at %.4f s\n",
+              cars, model.state_size(), lin.states(), long(lin.A_sparse.nonZeros()), eq_s,
+              eq.iterations, lin_s, eig_s, band.discs.size(), band.pairs.size(), describe_s, at_s);
+  for (const ShiftDisc& d : band.discs)
+    std::printf("  shift %+.3f%+.3fi radius %.3f k %d: %d restarts, %d OP applications\n",
+                d.shift.real(), d.shift.imag(), d.radius, d.eigenvalues, d.restarts,
+                d.operator_applications);
+  t0 = cpu_seconds();
+  const CriticalSpeedResult r = find_critical_speed(model, s.equilibrium.state, s.speed_m_per_s,
+                                                    twelve_speeds(EigenSolverKind::automatic));
+  std::printf("12-speed search %.3f s CPU (%d evaluations)\n", cpu_seconds() - t0, r.evaluations);
+  // A bisection (105..115 m/s, grid 5, tolerance 0.01) with and without
+  // tracking the crossing mode.
+  for (bool track : {false, true}) {
+    CriticalSpeedOptions o = twelve_speeds(EigenSolverKind::automatic);
+    o.from_m_per_s = 105.0;
+    o.tolerance_m_per_s = 0.01;
+    o.track_in_bisection = track;
+    t0 = cpu_seconds();
+    const CriticalSpeedResult b = find_critical_speed(model, s.equilibrium.state, s.speed_m_per_s, o);
+    std::printf("bisection 105..115 m/s, tracking %s: %.3f s CPU, %d evaluations, critical speed "
+                "%.6f m/s\n",
+                track ? "on" : "off", cpu_seconds() - t0, b.evaluations, b.critical_speed_m_per_s);
+  }
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   std::string cases_dir = "cases";
+  if (argc >= 3 && std::string(argv[1]) == "--profile")
+    return profile_run(argc >= 4 ? argv[3] : cases_dir, std::atoi(argv[2]));
   if (argc >= 3 && std::string(argv[1]) == "--memory")
     return memory_run(argc >= 4 ? argv[3] : cases_dir, std::atoi(argv[2]));
   if (argc >= 2) cases_dir = argv[1];

@@ -26,13 +26,17 @@ using ComplexSparse = Eigen::SparseMatrix<Complex>;
 // shift, differing at round-off) is never taken as inside.
 constexpr double kRimMargin = 1e-6;
 
-void validate(const Eigen::SparseMatrix<double>& A, const BandCoverOptions& o) {
+void validate_matrix(const Eigen::SparseMatrix<double>& A) {
   if (A.rows() != A.cols() || A.rows() < 4)
     throw std::invalid_argument("eigen_sparse_band: A must be square with at least 4 rows, got " +
                                 std::to_string(A.rows()) + " x " + std::to_string(A.cols()));
   for (Eigen::Index k = 0; k < A.nonZeros(); ++k)
     if (!std::isfinite(A.valuePtr()[k]))
       throw std::invalid_argument("eigen_sparse_band: matrix has NaN or infinite entries");
+}
+
+void validate(const Eigen::SparseMatrix<double>& A, const BandCoverOptions& o) {
+  validate_matrix(A);
   if (!(o.min_real_part_per_s < o.max_real_part_per_s) || !(o.max_frequency_hz > 0.0) ||
       !std::isfinite(o.min_real_part_per_s) || !std::isfinite(o.max_real_part_per_s) ||
       !std::isfinite(o.max_frequency_hz))
@@ -63,14 +67,19 @@ class ShiftedSparseLU {
   }
 
   // Factorises A - sigma I; false if it is singular (sigma an eigenvalue).
+  // The same sigma again (k doubled at one shift) keeps the factors.
   bool factorise(Complex sigma) {
+    if (factorised_ && sigma == sigma_) return true;
+    factorised_ = false;
+    sigma_ = sigma;
     shifted_ = A_.cast<Complex>();
     ComplexSparse identity(A_.rows(), A_.cols());
     identity.setIdentity();
     shifted_ -= sigma * identity;
     shifted_.makeCompressed();
     lu_.factorize(shifted_);
-    return lu_.info() == Eigen::Success;
+    factorised_ = lu_.info() == Eigen::Success;
+    return factorised_;
   }
 
   void solve(const Complex* x, Complex* y) {
@@ -82,15 +91,35 @@ class ShiftedSparseLU {
   const Eigen::SparseMatrix<double>& A_;
   ComplexSparse shifted_;
   Eigen::SparseLU<ComplexSparse, Eigen::COLAMDOrdering<int>> lu_;
+  Complex sigma_{0.0, 0.0};
+  bool factorised_ = false;
 };
+
+// A - sigma I factorised, nudged along Im where sigma is an eigenvalue
+// (singular): returns the shift actually factorised.
+Complex factorise_near(ShiftedSparseLU& lu, Complex sigma, double nudge) {
+  for (int attempt = 0; !lu.factorise(sigma); ++attempt) {
+    if (attempt >= 3)
+      throw std::runtime_error("eigen_sparse_band: A - sigma I singular near sigma = " +
+                               std::to_string(sigma.real()) + " + " +
+                               std::to_string(sigma.imag()) + "i");
+    sigma += Complex(0.0, nudge);
+  }
+  return sigma;
+}
 
 // The k eigenpairs of A nearest sigma (complex Arnoldi on (A - sigma I)^-1,
 // largest magnitude), eigenvalues as Rayleigh quotients of the Ritz vectors.
-// `all_converged`: false when ARPACK stopped before all k converged (then
-// the pairs returned are not proven to be the nearest).
-std::vector<EigenPair> nearest_eigenpairs(const Eigen::SparseMatrix<double>& A, double norm_A,
-                                          ShiftedSparseLU& lu, Complex sigma, int k,
-                                          double tolerance, bool& all_converged) {
+// The disc's radius: the farthest of the k (less kRimMargin), 0 when ARPACK
+// stopped before all k converged (then the pairs returned are not proven to
+// be the nearest). Pairs nearest first.
+NearestEigenpairs nearest_eigenpairs(const Eigen::SparseMatrix<double>& A, double norm_A,
+                                     ShiftedSparseLU& lu, Complex sigma, int k,
+                                     double tolerance) {
+  NearestEigenpairs out;
+  ShiftDisc& work = out.disc;
+  work.shift = sigma;
+  work.eigenvalues = k;
   const a_int n = a_int(A.rows());
   const a_int nev = std::min<a_int>(k, n - 2);
   // Basis 3k + 1: the cars' nearly equal modes come in tight clusters, which
@@ -137,9 +166,11 @@ std::vector<EigenPair> nearest_eigenpairs(const Eigen::SparseMatrix<double>& A, 
       throw std::runtime_error("eigen_sparse_band: ARPACK zneupd failed, info = " +
                                std::to_string(info_e));
   }
+  work.restarts = int(iparam[2]);
+  work.operator_applications = int(iparam[8]);
   const int converged = int(std::min<a_int>(iparam[4], nev));
-  all_converged = converged >= nev;
-  std::vector<EigenPair> pairs;
+  const bool all_converged = converged >= nev;
+  std::vector<EigenPair>& pairs = out.pairs;
   for (int j = 0; j < converged; ++j) {
     const Eigen::Map<const Eigen::VectorXcd> z(vectors.data() + static_cast<size_t>(j) * un, n);
     const Eigen::VectorXd z_re = z.real(), z_im = z.imag();
@@ -151,7 +182,15 @@ std::vector<EigenPair> nearest_eigenpairs(const Eigen::SparseMatrix<double>& A, 
     p.residual = (Az - lambda * z).norm() / (norm_A * std::sqrt(zz));
     pairs.push_back(std::move(p));
   }
-  return pairs;
+  std::sort(pairs.begin(), pairs.end(), [sigma](const EigenPair& a, const EigenPair& b) {
+    return std::abs(a.value - sigma) < std::abs(b.value - sigma);
+  });
+  // A hair inside the farthest: one on the rim (as another shift computes
+  // it, differing at round-off) is never taken as inside.
+  work.radius = all_converged && !pairs.empty()
+                    ? std::abs(pairs.back().value - sigma) * (1.0 - kRimMargin)
+                    : 0.0;
+  return out;
 }
 
 }  // namespace
@@ -170,32 +209,19 @@ BandEigenResult eigen_sparse_band(const Eigen::SparseMatrix<double>& A,
   double expected_half = half_width;  // guess of the next disc's h
   int k = o.eigenvalues_per_shift;
   while (covered_to < top && int(result.discs.size()) < o.max_shifts) {
-    Complex sigma(centre, std::min(covered_to + expected_half, top));
-    // A shift on an eigenvalue makes A - sigma I singular: nudge it.
-    for (int attempt = 0; !lu.factorise(sigma); ++attempt) {
-      if (attempt >= 3)
-        throw std::runtime_error("eigen_sparse_band: A - sigma I singular near sigma = " +
-                                 std::to_string(sigma.real()) + " + " +
-                                 std::to_string(sigma.imag()) + "i");
-      sigma += Complex(0.0, 1e-7 * top);
-    }
-    bool all_converged = false;
-    std::vector<EigenPair> found =
-        nearest_eigenpairs(A, norm_A, lu, sigma, k, o.tolerance, all_converged);
-    double radius = 0.0;
-    for (const EigenPair& p : found) radius = std::max(radius, std::abs(p.value - sigma));
-    // Fewer than asked converged: nothing is proven (an unconverged one may
-    // be nearer); the disc is empty and the shift is asked again with more.
-    radius = all_converged ? radius * (1.0 - kRimMargin) : 0.0;
+    const Complex sigma = factorise_near(
+        lu, Complex(centre, std::min(covered_to + expected_half, top)), 1e-7 * top);
+    NearestEigenpairs found = nearest_eigenpairs(A, norm_A, lu, sigma, k, o.tolerance);
+    const double radius = found.disc.radius;
     // Keep what lies in this disc and in no earlier one.
-    for (EigenPair& p : found) {
+    for (EigenPair& p : found.pairs) {
       if (!(std::abs(p.value - sigma) < radius)) continue;
       bool seen = false;
       for (const ShiftDisc& d : result.discs)
         if (std::abs(p.value - d.shift) < d.radius) seen = true;
       if (!seen) result.pairs.push_back(std::move(p));
     }
-    result.discs.push_back({sigma, radius, k});
+    result.discs.push_back(found.disc);
     const double h = radius > half_width ? std::sqrt(radius * radius - half_width * half_width) : 0.0;
     if (h < 0.1 * half_width) {
       // Too few eigenvalues to span the box's width here: ask for more.
@@ -219,6 +245,19 @@ BandEigenResult eigen_sparse_band(const Eigen::SparseMatrix<double>& A,
     return a.value.imag() > b.value.imag();
   });
   return result;
+}
+
+NearestEigenpairs eigen_sparse_nearest(const Eigen::SparseMatrix<double>& A,
+                                       std::complex<double> shift, int k, double tolerance) {
+  validate_matrix(A);
+  if (k < 1 || k > A.rows() - 2 || !std::isfinite(shift.real()) || !std::isfinite(shift.imag()))
+    throw std::invalid_argument("eigen_sparse_nearest: expected 1 <= k <= n - 2 = " +
+                                std::to_string(A.rows() - 2) + " and a finite shift, got k = " +
+                                std::to_string(k));
+  const double norm_A = std::max(A.norm(), std::numeric_limits<double>::min());
+  ShiftedSparseLU lu(A);
+  const Complex sigma = factorise_near(lu, shift, 1e-7 * std::max(1.0, std::abs(shift)));
+  return nearest_eigenpairs(A, norm_A, lu, sigma, k, tolerance);
 }
 
 }  // namespace railstab

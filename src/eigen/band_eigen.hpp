@@ -58,6 +58,9 @@ struct ShiftDisc {
   std::complex<double> shift;
   double radius = 0.0;  // every eigenvalue with |lambda - shift| < radius was found
   int eigenvalues = 0;  // k of the solve
+  // ARPACK's work (diagnostics): Arnoldi restarts and applications of OP.
+  int restarts = 0;
+  int operator_applications = 0;
 };
 
 struct BandEigenResult {
@@ -71,5 +74,19 @@ struct BandEigenResult {
 // box (min >= max, max_frequency_hz <= 0) or eigenvalues_per_shift < 1.
 BandEigenResult eigen_sparse_band(const Eigen::SparseMatrix<double>& A,
                                   const BandCoverOptions& options);
+
+// The k eigenpairs of A nearest `shift` by one shift-invert Arnoldi solve
+// (as one disc of eigen_sparse_band): every eigenvalue with
+// |lambda - shift| < disc.radius is in `pairs` (radius 0 when ARPACK did not
+// converge all k: then nothing is proven). For following a known mode from
+// a nearby matrix (a bisection in speed) at the cost of a few modes.
+struct NearestEigenpairs {
+  std::vector<EigenPair> pairs;  // nearest first
+  ShiftDisc disc;
+};
+// Throws as eigen_sparse_band for a bad A, and for k < 1 or k > n - 2.
+NearestEigenpairs eigen_sparse_nearest(const Eigen::SparseMatrix<double>& A,
+                                       std::complex<double> shift, int k,
+                                       double tolerance = 1e-12);
 
 }  // namespace railstab

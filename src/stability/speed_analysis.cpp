@@ -82,6 +82,44 @@ EquilibriumResult SpeedStability::steady_state_at(double speed_m_per_s) {
 }
 
 StabilityPoint SpeedStability::at(double speed_m_per_s) {
+  const bool sparse =
+      resolved_solver(options_.solver, model_.state_size()) == EigenSolverKind::sparse;
+  return evaluate(speed_m_per_s, sparse, [&](StabilityPoint& p) {
+    if (!sparse) return describe_modes(model_, p.linear, solve_eigen(p.linear.A, options_));
+    const BandEigenResult band = eigen_sparse_band(p.linear.A_sparse, band_cover_options(options_));
+    p.eigen_shifts = int(band.discs.size());
+    if (!band.covered) {
+      std::ostringstream w;
+      w << "sparse eigen-analysis: " << band.discs.size()
+        << " shifts did not cover the hunting band's box (Re in ["
+        << options_.sparse_min_real_part_per_s << ", " << options_.sparse_max_real_part_per_s
+        << "] 1/s, 0 to " << options_.max_frequency_hz
+        << " Hz): a mode there may be missing (use --solver dense)";
+      p.eigen_warning = w.str();
+    }
+    return describe_modes(model_, p.linear, band.pairs);
+  });
+}
+
+StabilityPoint SpeedStability::tracking(double speed_m_per_s, std::complex<double> shift,
+                                        int modes) {
+  return evaluate(speed_m_per_s, true, [&](StabilityPoint& p) {
+    const int k = std::min(modes, int(p.linear.A_sparse.rows()) - 2);
+    NearestEigenpairs near = eigen_sparse_nearest(p.linear.A_sparse, shift, k);
+    p.tracked = true;
+    p.tracked_shift = near.disc.shift;
+    p.tracked_radius_per_s = near.disc.radius;
+    p.eigen_shifts = 1;
+    if (!(near.disc.radius > 0.0))
+      p.eigen_warning = "tracked eigen-analysis: ARPACK did not converge the modes nearest the "
+                        "tracked one";
+    return describe_modes(model_, p.linear, near.pairs);
+  });
+}
+
+template <class Eigen_>
+StabilityPoint SpeedStability::evaluate(double speed_m_per_s, bool sparse,
+                                        Eigen_&& eigen_analysis) {
   const auto start = std::chrono::steady_clock::now();
   const Model& model = model_;
   StabilityPoint p;
@@ -100,29 +138,15 @@ StabilityPoint SpeedStability::at(double speed_m_per_s) {
   // The model's state count decides the solver (before the Jacobian, which
   // is stored dense or sparse accordingly; the cyclic coordinates it removes
   // are a handful).
-  p.solver_used = resolved_solver(options_.solver, model.state_size());
-  lin_opt.sparse = p.solver_used == EigenSolverKind::sparse;
+  p.solver_used = sparse ? EigenSolverKind::sparse : resolved_solver(options_.solver, model.state_size());
+  lin_opt.sparse = sparse;
   p.linear = with_model_context(
       model, {"linearisation", speed_m_per_s, t, &p.equilibrium.state},
       [&] { return linearize(model, speed_m_per_s, p.equilibrium.state, lin_opt); });
   EvaluationPlace eigen_place{"eigen-analysis", speed_m_per_s, t, &p.equilibrium.state};
   if (!lin_opt.sparse) eigen_place.matrix = &p.linear.A;
   eigen_place.matrix_state_names = &p.linear.state_names;
-  p.modes = with_model_context(model, eigen_place, [&] {
-    if (!lin_opt.sparse) return describe_modes(model, p.linear, solve_eigen(p.linear.A, options_));
-    const BandEigenResult band = eigen_sparse_band(p.linear.A_sparse, band_cover_options(options_));
-    p.eigen_shifts = int(band.discs.size());
-    if (!band.covered) {
-      std::ostringstream w;
-      w << "sparse eigen-analysis: " << band.discs.size()
-        << " shifts did not cover the hunting band's box (Re in ["
-        << options_.sparse_min_real_part_per_s << ", " << options_.sparse_max_real_part_per_s
-        << "] 1/s, 0 to " << options_.max_frequency_hz
-        << " Hz): a mode there may be missing (use --solver dense)";
-      p.eigen_warning = w.str();
-    }
-    return describe_modes(model, p.linear, band.pairs);
-  });
+  p.modes = with_model_context(model, eigen_place, [&] { return eigen_analysis(p); });
   p.least_stable = least_stable_mode(p.modes, options_.max_frequency_hz);
   p.least_damped = least_damped_mode(p.modes, options_.max_frequency_hz);
   for (int i = 0; i < int(p.modes.size()); ++i)
@@ -184,16 +208,38 @@ struct SpeedBracket {
   StabilityPoint lo, hi;
   double zero_m_per_s = 0.0;
 };
+//
+// Tracking (track, sparse solver, a crossing mode known at hi): a midpoint is
+// a tracked point (SpeedStability::tracking), the options.tracked_modes
+// eigenpairs nearest the least stable eigenvalue of the bracket's unstable
+// end, and its margin is that of the modes found. That proves the sign only
+// for the modes in its disc, so the final bracket's tracked ends are
+// evaluated again with the full covering solve: where the full margin agrees
+// the bracket is proven as by a bisection without tracking; where not (a
+// mode outside the tracked disc decided), the bisection goes on without
+// tracking inside the part of the bracket the full solves left.
 template <class Margin, class Report>
 SpeedBracket bisect_speed(const Model& model, const CriticalSpeedOptions& options,
                           StabilityPoint lo, StabilityPoint hi, const char* what, Margin&& margin,
-                          CriticalSpeedResult& r, Report& report) {
+                          CriticalSpeedResult& r, Report& report, bool track = false) {
+  track = track && options.tracked_modes > 0 && hi.solver_used == EigenSolverKind::sparse &&
+          hi.least_stable >= 0;
+  const StabilityPoint grid_lo = lo, grid_hi = track ? hi : StabilityPoint{};
   SpeedStability refine(model, lo.equilibrium.state, lo.speed_m_per_s, options.stability);
   while (hi.speed_m_per_s - lo.speed_m_per_s > options.tolerance_m_per_s) {
     const double mid = 0.5 * (lo.speed_m_per_s + hi.speed_m_per_s);
     StabilityPoint p;
     try {
-      p = refine.at(mid);
+      bool done = false;
+      if (track) {
+        try {
+          p = refine.tracking(mid, hi.modes[size_t(hi.least_stable)].eigenvalue,
+                              options.tracked_modes);
+          done = p.tracked_radius_per_s > 0.0 && p.least_stable >= 0;
+        } catch (const std::runtime_error&) {
+        }
+      }
+      if (!done) p = refine.at(mid);  // also where tracking found nothing to follow
       release_state_matrix(p);
     } catch (const std::runtime_error& e) {
       std::ostringstream why;
@@ -208,6 +254,26 @@ SpeedBracket bisect_speed(const Model& model, const CriticalSpeedOptions& option
     }
     report(p);
     (margin(p) < 0.0 ? hi : lo) = std::move(p);
+  }
+  if (track) {
+    // The full covering solve at each tracked end of the final bracket.
+    auto covering = [&](const StabilityPoint& q) {
+      SpeedStability at_q(model, q.equilibrium.state, q.speed_m_per_s, options.stability);
+      StabilityPoint f = at_q.at(q.speed_m_per_s);
+      release_state_matrix(f);
+      report(f);
+      return f;
+    };
+    if (lo.tracked) {
+      lo = covering(lo);
+      if (margin(lo) < 0.0)  // a mode outside the tracked disc crossed below
+        return bisect_speed(model, options, grid_lo, std::move(lo), what, margin, r, report);
+    }
+    if (hi.tracked) {
+      hi = covering(hi);
+      if (!(margin(hi) < 0.0))  // the tracked crossing was not the full decision's
+        return bisect_speed(model, options, std::move(hi), grid_hi, what, margin, r, report);
+    }
   }
   const double a = margin(lo), b = margin(hi);
   SpeedBracket out;
@@ -323,7 +389,8 @@ CriticalSpeedResult find_critical_speed(const Model& model, const Eigen::VectorX
     // The margin is minus the largest real part (negative: unstable).
     SpeedBracket b = bisect_speed(
         model, options, r.grid[crossing - 1], r.grid[crossing], "critical-speed",
-        [](const StabilityPoint& p) { return -p.max_real_part; }, r, report);
+        [](const StabilityPoint& p) { return -p.max_real_part; }, r, report,
+        options.track_in_bisection);
     r.speed_tolerance_m_per_s =
         std::max(options.tolerance_m_per_s, b.hi.speed_m_per_s - b.lo.speed_m_per_s);
     r.critical_speed_m_per_s = b.zero_m_per_s;

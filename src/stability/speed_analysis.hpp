@@ -70,6 +70,14 @@ struct StabilityPoint {
   // not, eigen_warning says so and the decision may have missed a mode).
   int eigen_shifts = 0;
   std::string eigen_warning;
+  // A tracked point (a critical-speed bisection's midpoint, sparse solver):
+  // only the modes nearest the mode that crosses, one shift-invert solve at
+  // its eigenvalue at the bracket's unstable end (SpeedStability::tracking);
+  // every eigenvalue within tracked_radius_per_s of tracked_shift is among
+  // `modes`, nothing is known of the rest of the box.
+  bool tracked = false;
+  std::complex<double> tracked_shift;
+  double tracked_radius_per_s = 0.0;
   double seconds = 0.0;           // wall time of this point
 };
 
@@ -82,8 +90,15 @@ class SpeedStability {
   SpeedStability(const Model& model, const Eigen::VectorXd& equilibrium_guess,
                  double guess_speed_m_per_s, StabilityOptions options = {});
   StabilityPoint at(double speed_m_per_s);
+  // As at(), but the eigen-analysis only the `modes` eigenpairs nearest
+  // `shift` (sparse shift-invert, eigen/band_eigen.hpp eigen_sparse_nearest):
+  // a point with tracked = true. For following a known mode a short way in
+  // speed; it proves nothing about the box outside its disc.
+  StabilityPoint tracking(double speed_m_per_s, std::complex<double> shift, int modes);
 
  private:
+  template <class Eigen_>
+  StabilityPoint evaluate(double speed_m_per_s, bool sparse, Eigen_&& eigen_analysis);
   EquilibriumResult steady_state_at(double speed_m_per_s);
   const Model& model_;
   StabilityOptions options_;
@@ -141,6 +156,14 @@ struct CriticalSpeedOptions {
   double from_m_per_s = 5.0, to_m_per_s = 100.0, grid_step_m_per_s = 5.0;
   double tolerance_m_per_s = 0.01;
   StabilityOptions stability;
+  // Sparse solver: the critical-speed bisection's midpoints follow the
+  // crossing mode (tracked points, `tracked_modes` eigenpairs at its last
+  // eigenvalue) instead of covering the whole box; the final bracket's ends
+  // are evaluated again with the full covering solve, so the bracket is
+  // proven as without tracking (see find_critical_speed). Grid points always
+  // cover the box.
+  bool track_in_bisection = true;
+  int tracked_modes = 12;
   // > 0: also find the lowest speed where a lateral-plane mode in the
   // hunting band (least_damped_mode) has a damping ratio below this (e.g.
   // 0.05); 0: off.
