@@ -15,6 +15,8 @@
 //    2.5 m/s, automatic solver; no plots), the number the build flags are
 //    chosen by (its critical speed printed to 12 digits).
 //   build/bench_jacobian [cases-dir]
+//   build/bench_jacobian [cases-dir] --profile-search N   (N searches and
+//     nothing else: a steady workload for perf or callgrind)
 #include "eigen/eigen_analysis.hpp"
 #include "equilibrium/equilibrium.hpp"
 #include "linear/jacobian.hpp"
@@ -24,6 +26,7 @@
 #include "stability/speed_analysis.hpp"
 
 #include <algorithm>
+#include <cstdlib>
 #include <complex>
 #include <cstdio>
 #include <ctime>
@@ -186,10 +189,29 @@ void bench_scene(const std::string& path, bool search) {
               t_search, r.evaluations, r.critical_speed_found ? r.critical_speed_m_per_s : 0.0);
 }
 
+// The thesis vehicle's default-range search, `repeats` times (for profilers).
+void profile_search(const std::string& dir, int repeats) {
+  const PreparedScene scene = prepare_scene(dir + "/thesis_vehicle_tangent.toml", {});
+  CriticalSpeedOptions cs;
+  cs.from_m_per_s = 5.0;
+  cs.to_m_per_s = 150.0;
+  cs.grid_step_m_per_s = 2.5;
+  CriticalSpeedResult r;
+  const double start = cpu_seconds();
+  for (int i = 0; i < repeats; ++i)
+    r = find_critical_speed(scene.model, scene.equilibrium.state, scene.speed_m_per_s, cs);
+  std::printf("%d searches: %.4f s CPU each, %d speeds, V_crit %.12g m/s\n", repeats,
+              (cpu_seconds() - start) / repeats, r.evaluations, r.critical_speed_m_per_s);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   const std::string dir = argc > 1 ? argv[1] : "cases";
+  if (argc > 3 && std::string(argv[2]) == "--profile-search") {
+    profile_search(dir, std::max(1, std::atoi(argv[3])));
+    return 0;
+  }
   bench_scene(dir + "/thesis_vehicle_tangent.toml", true);
   bench_scene(dir + "/coach_tangent.toml", false);
   return 0;

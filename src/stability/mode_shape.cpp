@@ -81,9 +81,6 @@ ModeShape mode_shape(const Model& model, const LinearModel& lin, const Eigen::Ma
     q(ref) = 1.0;  // exactly, not 1 + round-off
   }
   const Eigen::VectorXd m = coordinate_inertia(model);
-  const Eigen::MatrixXd K_s = with_potential ? Eigen::MatrixXd(0.5 * (stiffness + stiffness.transpose()))
-                                             : Eigen::MatrixXd::Zero(n, n);
-  const Eigen::VectorXcd Kq = K_s.cast<std::complex<double>>() * q;
   double kinetic = 0.0, potential = 0.0, potential_scale = 0.0;
   shape.coordinates.resize(size_t(n));
   for (int k = 0; k < n; ++k) {
@@ -91,10 +88,21 @@ ModeShape mode_shape(const Model& model, const LinearModel& lin, const Eigen::Ma
     std::tie(c.body, c.coordinate) = model.coordinate_of_state[size_t(k)];
     c.displacement = q(k);
     c.kinetic_share = m(k) * std::norm(u(k));
-    c.potential_share = (std::conj(q(k)) * Kq(k)).real();
     kinetic += c.kinetic_share;
-    potential += c.potential_share;
-    potential_scale += std::abs(q(k)) * (K_s.row(k).cwiseAbs() * q.cwiseAbs()).value();
+  }
+  // The potential shares only with a stiffness: O(n^2) per mode (a speed
+  // sweep describes every mode at every speed without one, and computing
+  // them on a zero matrix was most of its cost).
+  if (with_potential) {
+    const Eigen::MatrixXd K_s = 0.5 * (stiffness + stiffness.transpose());
+    const Eigen::VectorXcd Kq = K_s.cast<std::complex<double>>() * q;
+    const Eigen::VectorXd abs_q = q.cwiseAbs();
+    for (int k = 0; k < n; ++k) {
+      CoordinateMotion& c = shape.coordinates[size_t(k)];
+      c.potential_share = (std::conj(q(k)) * Kq(k)).real();
+      potential += c.potential_share;
+      potential_scale += abs_q(k) * (K_s.row(k).cwiseAbs() * abs_q).value();
+    }
   }
   // Round-off of the quadratic form is ~eps times its terms' magnitudes.
   shape.potential_defined =
