@@ -17,6 +17,8 @@
 //   build/bench_jacobian [cases-dir]
 //   build/bench_jacobian [cases-dir] --profile-search N   (N searches and
 //     nothing else: a steady workload for perf or callgrind)
+//   build/bench_jacobian [cases-dir] --profile-jacobian N (N coloured AD
+//     Jacobians of the thesis vehicle, likewise)
 #include "eigen/eigen_analysis.hpp"
 #include "equilibrium/equilibrium.hpp"
 #include "linear/jacobian.hpp"
@@ -204,12 +206,27 @@ void profile_search(const std::string& dir, int repeats) {
               (cpu_seconds() - start) / repeats, r.evaluations, r.critical_speed_m_per_s);
 }
 
+void profile_jacobian(const std::string& dir, int repeats) {
+  const PreparedScene scene = prepare_scene(dir + "/thesis_vehicle_tangent.toml", {});
+  const RhsJacobianPlan plan = plan_rhs_jacobian(scene.model);
+  const double start = cpu_seconds();
+  double sum = 0.0;
+  for (int i = 0; i < repeats; ++i)
+    sum += rhs_jacobian_ad(scene.model, plan, scene.speed_m_per_s, 0.0, scene.equilibrium.state)(0, 0);
+  std::printf("%d Jacobians: %.2f us CPU each (%g)\n", repeats,
+              1e6 * (cpu_seconds() - start) / repeats, sum);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   const std::string dir = argc > 1 ? argv[1] : "cases";
   if (argc > 3 && std::string(argv[2]) == "--profile-search") {
     profile_search(dir, std::max(1, std::atoi(argv[3])));
+    return 0;
+  }
+  if (argc > 3 && std::string(argv[2]) == "--profile-jacobian") {
+    profile_jacobian(dir, std::max(1, std::atoi(argv[3])));
     return 0;
   }
   bench_scene(dir + "/thesis_vehicle_tangent.toml", true);

@@ -61,14 +61,15 @@ ModeShape mode_shape(const Model& model, const LinearModel& lin, const Eigen::Ma
   }
   ModeShape shape;
   // Reference coordinate: largest lateral, else translation, else any.
-  const double largest = q.cwiseAbs().maxCoeff();
+  const Eigen::VectorXd abs_q = q.cwiseAbs();  // each modulus once (hypot)
+  const double largest = abs_q.maxCoeff();
   auto pick = [&](auto eligible) {
     int best = -1;
     for (int k = 0; k < n; ++k) {
       if (!eligible(model.coordinate_of_state[size_t(k)].second)) continue;
-      if (best < 0 || std::abs(q(k)) > std::abs(q(best))) best = k;
+      if (best < 0 || abs_q(k) > abs_q(best)) best = k;
     }
-    return best >= 0 && std::abs(q(best)) > 1e-6 * largest ? best : -1;
+    return best >= 0 && abs_q(best) > 1e-6 * largest ? best : -1;
   };
   int ref = pick([](int c) { return c == 1; });
   if (ref < 0) ref = pick([](int c) { return c < 3; });
@@ -96,12 +97,12 @@ ModeShape mode_shape(const Model& model, const LinearModel& lin, const Eigen::Ma
   if (with_potential) {
     const Eigen::MatrixXd K_s = 0.5 * (stiffness + stiffness.transpose());
     const Eigen::VectorXcd Kq = K_s.cast<std::complex<double>>() * q;
-    const Eigen::VectorXd abs_q = q.cwiseAbs();
+    const Eigen::VectorXd abs_q_hat = q.cwiseAbs();  // of the normalised q
     for (int k = 0; k < n; ++k) {
       CoordinateMotion& c = shape.coordinates[size_t(k)];
       c.potential_share = (std::conj(q(k)) * Kq(k)).real();
       potential += c.potential_share;
-      potential_scale += abs_q(k) * (K_s.row(k).cwiseAbs() * abs_q).value();
+      potential_scale += abs_q_hat(k) * (K_s.row(k).cwiseAbs() * abs_q_hat).value();
     }
   }
   // Round-off of the quadratic form is ~eps times its terms' magnitudes.
