@@ -15,7 +15,7 @@
 
 namespace railstab {
 
-inline constexpr int kAdChunk = 16;
+inline constexpr int kAdChunk = 24;
 using AdDerivatives = Eigen::Matrix<double, kAdChunk, 1>;
 using AdScalar = Eigen::AutoDiffScalar<AdDerivatives>;
 
