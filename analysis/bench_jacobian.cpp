@@ -1,8 +1,8 @@
 // The linearisation hot path before and after issue 11, measured in one run
 // (CPU time of this process, 5 batches of >= 0.2 s, median of the batch
 // means), on the thesis vehicle and the coach:
-//  - the AD Jacobian: dense (one direction per column, 16 per evaluation:
-//    the old product path) against coloured (one direction per colour of
+//  - the AD Jacobian: dense (one direction per column, kAdChunk per
+//    evaluation: the old product path) against coloured (one direction per colour of
 //    the structural pattern), in residual evaluations (rhs<double>) per
 //    Jacobian; the planning (pattern + colouring) alone;
 //  - the equilibrium Newton Jacobian: the whole coloured Jacobian with the
@@ -189,6 +189,12 @@ void bench_scene(const std::string& path, bool search) {
   std::printf("  critical-speed search (5..150 m/s, step 2.5, no plots): %.4f s CPU, %d speeds, "
               "V_crit %.12g m/s\n",
               t_search, r.evaluations, r.critical_speed_found ? r.critical_speed_m_per_s : 0.0);
+  // The floor: per speed one dense eigen-solve and one coloured Jacobian,
+  // nothing else (issue 11's target: the search within 1.2x of it).
+  const double floor_s = r.evaluations * (t_solver + t_col);
+  std::printf("  floor %d x (EigenSolver %.3f ms + coloured Jacobian %.3f ms) = %.4f s; "
+              "search / floor %.2f\n",
+              r.evaluations, t_solver * 1e3, t_col * 1e3, floor_s, t_search / floor_s);
 }
 
 // The thesis vehicle's default-range search, `repeats` times (for profilers).
