@@ -5,7 +5,7 @@
 // Eigen's forward-mode AutoDiffScalar with a *fixed-size* derivative vector of
 // kAdChunk directions, so no operation allocates (dynamic-size AutoDiff was
 // measured ~30x slower, Drake issue 1199). A Jacobian with more columns than
-// kAdChunk is assembled chunk by chunk (see linear/ad_jacobian.hpp).
+// kAdChunk is assembled chunk by chunk (see linear/jacobian.hpp).
 #include <Eigen/Dense>
 #include <unsupported/Eigen/AutoDiff>
 
@@ -15,7 +15,12 @@
 
 namespace railstab {
 
-inline constexpr int kAdChunk = 16;
+// 24 by measurement (analysis/bench_jacobian.cpp, issue 11): an AD evaluation
+// of the thesis vehicle costs ~92 us + ~2.1 us per direction, so its 44
+// colours take 2 evaluations of 24 (24 residuals) instead of 3 of 16 (32),
+// and its equilibrium's 23 colours 1 instead of 2. 48 (1 evaluation) was
+// 10 % faster for the whole Jacobian but doubled the equilibrium's.
+inline constexpr int kAdChunk = 24;
 using AdDerivatives = Eigen::Matrix<double, kAdChunk, 1>;
 using AdScalar = Eigen::AutoDiffScalar<AdDerivatives>;
 

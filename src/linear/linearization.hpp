@@ -13,6 +13,7 @@
 #include <Eigen/Sparse>
 
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace railstab {
@@ -29,7 +30,28 @@ struct LinearModel {
   std::vector<std::string> removed_states;  // cyclic coordinates dropped
   double equilibrium_residual = 0.0;      // max |acceleration| (and internal rate) at the point
   int states() const { return int(kept_states.size()); }
+
+  LinearModel() = default;
+  LinearModel(const LinearModel&) = default;
+  LinearModel& operator=(const LinearModel&) = default;
+  // Eigen 3.4's SparseMatrix has no move constructor (moving one copies it,
+  // and a copy may throw), so without these a LinearModel, and everything
+  // holding one, is not nothrow-movable and std::vector copies its elements
+  // when it grows: a speed sweep copied every StabilityPoint (modes,
+  // vectors, shapes). Swapping the sparse matrix moves it without throwing.
+  LinearModel(LinearModel&& other) noexcept { *this = std::move(other); }
+  LinearModel& operator=(LinearModel&& other) noexcept {
+    A = std::move(other.A);
+    A_sparse.swap(other.A_sparse);
+    norm_A = other.norm_A;
+    kept_states = std::move(other.kept_states);
+    state_names = std::move(other.state_names);
+    removed_states = std::move(other.removed_states);
+    equilibrium_residual = other.equilibrium_residual;
+    return *this;
+  }
 };
+static_assert(std::is_nothrow_move_constructible_v<LinearModel>);
 
 struct LinearizationOptions {
   double time_s = 0.0;

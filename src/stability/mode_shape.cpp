@@ -61,14 +61,15 @@ ModeShape mode_shape(const Model& model, const LinearModel& lin, const Eigen::Ma
   }
   ModeShape shape;
   // Reference coordinate: largest lateral, else translation, else any.
-  const double largest = q.cwiseAbs().maxCoeff();
+  const Eigen::VectorXd abs_q = q.cwiseAbs();  // each modulus once (hypot)
+  const double largest = abs_q.maxCoeff();
   auto pick = [&](auto eligible) {
     int best = -1;
     for (int k = 0; k < n; ++k) {
       if (!eligible(model.coordinate_of_state[size_t(k)].second)) continue;
-      if (best < 0 || std::abs(q(k)) > std::abs(q(best))) best = k;
+      if (best < 0 || abs_q(k) > abs_q(best)) best = k;
     }
-    return best >= 0 && std::abs(q(best)) > 1e-6 * largest ? best : -1;
+    return best >= 0 && abs_q(best) > 1e-6 * largest ? best : -1;
   };
   int ref = pick([](int c) { return c == 1; });
   if (ref < 0) ref = pick([](int c) { return c < 3; });
@@ -90,18 +91,18 @@ ModeShape mode_shape(const Model& model, const LinearModel& lin, const Eigen::Ma
     c.kinetic_share = m(k) * std::norm(u(k));
     kinetic += c.kinetic_share;
   }
-  // The quadratic form only where a stiffness was given: it costs n^2 per
-  // mode (a 16-car train's 650 coordinates, 170 modes per speed: the zero
-  // matrix it multiplied before was a fifth of a search).
+  // The potential shares only with a stiffness: O(n^2) per mode (a speed
+  // sweep describes every mode at every speed without one, and computing
+  // them on a zero matrix was most of its cost).
   if (with_potential) {
     const Eigen::MatrixXd K_s = 0.5 * (stiffness + stiffness.transpose());
     const Eigen::VectorXcd Kq = K_s.cast<std::complex<double>>() * q;
-    const Eigen::VectorXd q_abs = q.cwiseAbs();
+    const Eigen::VectorXd abs_q_hat = q.cwiseAbs();  // of the normalised q
     for (int k = 0; k < n; ++k) {
       CoordinateMotion& c = shape.coordinates[size_t(k)];
       c.potential_share = (std::conj(q(k)) * Kq(k)).real();
       potential += c.potential_share;
-      potential_scale += q_abs(k) * (K_s.row(k).cwiseAbs() * q_abs).value();
+      potential_scale += abs_q_hat(k) * (K_s.row(k).cwiseAbs() * abs_q_hat).value();
     }
   }
   // Round-off of the quadratic form is ~eps times its terms' magnitudes.

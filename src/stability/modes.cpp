@@ -26,7 +26,11 @@ std::vector<int> conjugate_partners(const std::vector<ModeReport>& modes) {
     double best = 1e-8 * std::max(1.0, std::abs(modes[i].eigenvalue));
     for (size_t j = 0; j < modes.size(); ++j) {
       if (modes[j].eigenvalue.imag() <= 0.0) continue;
-      const double d = std::abs(modes[j].eigenvalue - std::conj(modes[i].eigenvalue));
+      const std::complex<double> diff = modes[j].eigenvalue - std::conj(modes[i].eigenvalue);
+      // |diff| >= max(|Re|, |Im|) (hypot rounds to at least the larger
+      // component): most candidates are ruled out without the modulus.
+      if (std::max(std::abs(diff.real()), std::abs(diff.imag())) > best) continue;
+      const double d = std::abs(diff);
       if (d <= best) {
         best = d;
         partner[i] = int(j);
@@ -53,17 +57,23 @@ std::vector<ModeReport> describe_modes(const Model& model, const LinearModel& li
     m.neutral = std::abs(p.value) <= zero;
     m.vector = p.vector;
     m.shape = mode_shape(model, lin, Eigen::MatrixXd(), p.value, p.vector);
-    std::vector<Participation> parts;
-    for (const CoordinateMotion& c : m.shape.coordinates) {
-      if (c.coordinate == 1 || c.coordinate == 3 || c.coordinate == 5)
-        m.lateral_share += c.kinetic_share;
-      parts.push_back({model.bodies[size_t(c.body)].name, c.coordinate, c.kinetic_share});
+    const std::vector<CoordinateMotion>& coords = m.shape.coordinates;
+    std::vector<int> order(coords.size());
+    for (size_t k = 0; k < coords.size(); ++k) {
+      if (coords[k].coordinate == 1 || coords[k].coordinate == 3 || coords[k].coordinate == 5)
+        m.lateral_share += coords[k].kinetic_share;
+      order[k] = int(k);
     }
-    std::stable_sort(parts.begin(), parts.end(), [](const Participation& a, const Participation& b) {
-      return a.share > b.share;
+    // The six largest shares, ties in coordinate order (a stable sort of
+    // indices: the body names are copied for those six only).
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+      return coords[size_t(a)].kinetic_share > coords[size_t(b)].kinetic_share;
     });
-    if (parts.size() > 6) parts.resize(6);
-    m.participation = parts;
+    if (order.size() > 6) order.resize(6);
+    for (int k : order) {
+      const CoordinateMotion& c = coords[size_t(k)];
+      m.participation.push_back({model.bodies[size_t(c.body)].name, c.coordinate, c.kinetic_share});
+    }
     m.shape_name = m.neutral ? "neutral (rigid-body/cyclic)"
                              : mode_name_from_shape(model, roles, m.shape, p.value);
     modes.push_back(std::move(m));
