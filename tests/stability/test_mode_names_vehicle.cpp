@@ -144,6 +144,9 @@ TEST(ModeNamesOnVehicle, EnergySharesOfEveryModeSumToOne) {
   const CoordinateMotion& ref = hunting.coordinates[size_t(hunting.reference)];
   EXPECT_EQ(ref.coordinate, 1);
   EXPECT_EQ(ref.displacement, std::complex<double>(1.0, 0.0));
-  for (const CoordinateMotion& c : hunting.coordinates)
-    if (c.coordinate == 1) EXPECT_LE(std::abs(c.displacement), 1.0 + 1e-12);
+  for (const CoordinateMotion& c : hunting.coordinates) {
+    if (c.coordinate == 1) {
+      EXPECT_LE(std::abs(c.displacement), 1.0 + 1e-12);
+    }
+  }
 }
