@@ -9,6 +9,7 @@
 #include "eigen/band_eigen.hpp"
 #include "setup/prepare_scene.hpp"
 #include "stability/speed_analysis.hpp"
+#include "support/known_spectrum.hpp"
 
 #include <gtest/gtest.h>
 
@@ -69,27 +70,9 @@ std::string compare_in_box(const std::vector<std::complex<double>>& reference,
 TEST(BandEigen, FindsEveryKnownEigenvalueInTheBoxOnce) {
   // 300 blocks: eigenvalues a +- i b with a in [-20, 10], b in [0.5, 200]
   // (some outside the box either way), plus 40 real ones.
-  std::mt19937 rng(7);
-  std::uniform_real_distribution<double> re(-20.0, 10.0), im(0.5, 200.0);
-  std::vector<Eigen::Triplet<double>> t;
-  std::vector<std::complex<double>> reference;
-  int row = 0;
-  for (int b = 0; b < 300; ++b, row += 2) {
-    const double a = re(rng), w = im(rng);
-    t.emplace_back(row, row, a);
-    t.emplace_back(row, row + 1, w);
-    t.emplace_back(row + 1, row, -w);
-    t.emplace_back(row + 1, row + 1, a);
-    reference.push_back({a, w});
-    reference.push_back({a, -w});
-  }
-  for (int r = 0; r < 40; ++r, ++row) {
-    const double a = re(rng);
-    t.emplace_back(row, row, a);
-    reference.push_back({a, 0.0});
-  }
-  Eigen::SparseMatrix<double> A(row, row);
-  A.setFromTriplets(t.begin(), t.end());
+  const test::KnownSpectrum known = test::block_diagonal_known_spectrum(7, 300, 40);
+  const Eigen::SparseMatrix<double>& A = known.matrix;
+  const std::vector<std::complex<double>>& reference = known.eigenvalues;
   BandCoverOptions o;
   o.eigenvalues_per_shift = 6;  // thin discs: k must grow and shifts multiply
   const BandEigenResult r = eigen_sparse_band(A, o);

@@ -12,6 +12,7 @@
 #include "eigen/band_eigen.hpp"
 #include "setup/prepare_scene.hpp"
 #include "stability/speed_analysis.hpp"
+#include "support/known_spectrum.hpp"
 
 #include <gtest/gtest.h>
 
@@ -30,22 +31,9 @@ std::string case_path(const std::string& name) {
 }  // namespace
 
 TEST(TrackedBisection, NearestEigenpairsAreTheKNearestKnownOnes) {
-  std::mt19937 rng(11);
-  std::uniform_real_distribution<double> re(-20.0, 10.0), im(0.5, 200.0);
-  std::vector<Eigen::Triplet<double>> t;
-  std::vector<std::complex<double>> reference;
-  int row = 0;
-  for (int b = 0; b < 200; ++b, row += 2) {
-    const double a = re(rng), w = im(rng);
-    t.emplace_back(row, row, a);
-    t.emplace_back(row, row + 1, w);
-    t.emplace_back(row + 1, row, -w);
-    t.emplace_back(row + 1, row + 1, a);
-    reference.push_back({a, w});
-    reference.push_back({a, -w});
-  }
-  Eigen::SparseMatrix<double> A(row, row);
-  A.setFromTriplets(t.begin(), t.end());
+  test::KnownSpectrum known = test::block_diagonal_known_spectrum(11, 200);
+  const Eigen::SparseMatrix<double>& A = known.matrix;
+  std::vector<std::complex<double>>& reference = known.eigenvalues;
   const std::complex<double> shift(-1.0, 40.0);
   const int k = 10;
   const NearestEigenpairs near = eigen_sparse_nearest(A, shift, k);
