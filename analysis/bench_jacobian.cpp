@@ -19,6 +19,7 @@
 //     nothing else: a steady workload for perf or callgrind)
 //   build/bench_jacobian [cases-dir] --profile-jacobian N (N coloured AD
 //     Jacobians of the thesis vehicle, likewise)
+#include "support/column_by_column_eigen.hpp"
 #include "eigen/eigen_analysis.hpp"
 #include "equilibrium/equilibrium.hpp"
 #include "linear/jacobian.hpp"
@@ -66,35 +67,11 @@ double seconds_per_call(const std::function<void()>& call, double batch_s = 0.2)
   return means[2];
 }
 
-// --- eigen_dense as it was before issue 11 (reference for the timing) -------
-using Complex = std::complex<double>;
-
-Eigen::VectorXcd canonical_phase(Eigen::VectorXcd v) {
-  const double norm = v.norm();
-  if (norm == 0.0) return v;
-  Eigen::Index peak = 0;
-  v.cwiseAbs().maxCoeff(&peak);
-  const Complex unit_phase = v(peak) / std::abs(v(peak));
-  return v * (std::conj(unit_phase) / norm);
-}
-
+// --- eigen_dense as it was before issue 11 (reference for the timing):
+// tests/support/column_by_column_eigen.hpp with the eigenvector matrix
+// rebuilt per column, as the old loop did.
 std::vector<EigenPair> legacy_eigen_dense(const Eigen::MatrixXd& A) {
-  Eigen::EigenSolver<Eigen::MatrixXd> solver(A, true);
-  const double norm_A = A.norm();
-  std::vector<EigenPair> pairs;
-  for (Eigen::Index j = 0; j < A.rows(); ++j) {
-    // The old loop: solver.eigenvectors() (the whole matrix) per column.
-    EigenPair p{solver.eigenvalues()(j), canonical_phase(solver.eigenvectors().col(j)), 0.0};
-    const Eigen::VectorXd Av_re = A * p.vector.real(), Av_im = A * p.vector.imag();
-    const Eigen::VectorXcd Av = Av_re.cast<Complex>() + Complex(0.0, 1.0) * Av_im.cast<Complex>();
-    p.residual = (Av - p.value * p.vector).norm() / (norm_A * p.vector.norm());
-    pairs.push_back(p);
-  }
-  std::sort(pairs.begin(), pairs.end(), [](const EigenPair& a, const EigenPair& b) {
-    if (a.value.real() != b.value.real()) return a.value.real() > b.value.real();
-    return a.value.imag() > b.value.imag();
-  });
-  return pairs;
+  return test::column_by_column_eigen(A, /*eigenvectors_per_column=*/true);
 }
 
 bool same_pairs(const std::vector<EigenPair>& a, const std::vector<EigenPair>& b) {

@@ -13,6 +13,8 @@
 #include "linear/linearization.hpp"
 #include "setup/prepare_scene.hpp"
 
+#include "support/column_by_column_eigen.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -25,35 +27,6 @@ using namespace railstab;
 namespace {
 
 using Complex = std::complex<double>;
-
-// The canonical phase spelled out: the largest modulus by |.| itself.
-Eigen::VectorXcd reference_phase(Eigen::VectorXcd v) {
-  const double norm = v.norm();
-  if (norm == 0.0) return v;
-  Eigen::Index peak = 0;
-  v.cwiseAbs().maxCoeff(&peak);
-  const Complex unit_phase = v(peak) / std::abs(v(peak));
-  return v * (std::conj(unit_phase) / norm);
-}
-
-std::vector<EigenPair> column_by_column(const Eigen::MatrixXd& A) {
-  Eigen::EigenSolver<Eigen::MatrixXd> solver(A, true);
-  const Eigen::MatrixXcd vectors = solver.eigenvectors();
-  const double norm_A = A.norm();
-  std::vector<EigenPair> pairs;
-  for (Eigen::Index j = 0; j < A.rows(); ++j) {
-    EigenPair p{solver.eigenvalues()(j), reference_phase(vectors.col(j)), 0.0};
-    const Eigen::VectorXd Av_re = A * p.vector.real(), Av_im = A * p.vector.imag();
-    const Eigen::VectorXcd Av = Av_re.cast<Complex>() + Complex(0.0, 1.0) * Av_im.cast<Complex>();
-    p.residual = (Av - p.value * p.vector).norm() / (norm_A * p.vector.norm());
-    pairs.push_back(p);
-  }
-  std::sort(pairs.begin(), pairs.end(), [](const EigenPair& a, const EigenPair& b) {
-    if (a.value.real() != b.value.real()) return a.value.real() > b.value.real();
-    return a.value.imag() > b.value.imag();
-  });
-  return pairs;
-}
 
 void expect_bit_identical(const std::vector<EigenPair>& got, const std::vector<EigenPair>& want) {
   ASSERT_EQ(got.size(), want.size());
@@ -74,10 +47,10 @@ TEST(EigenDensePairs, ThesisVehicleMatchesColumnByColumn) {
       prepare_scene(std::string(RAILSTAB_CASES_DIR) + "/thesis_vehicle_tangent.toml", {});
   const LinearModel lin = linearize(scene.model, scene.speed_m_per_s, scene.equilibrium.state);
   ASSERT_EQ(lin.A.rows(), 78);
-  expect_bit_identical(eigen_dense(lin.A), column_by_column(lin.A));
+  expect_bit_identical(eigen_dense(lin.A), test::column_by_column_eigen(lin.A));
 }
 
 TEST(EigenDensePairs, SyntheticSystemMatchesColumnByColumn) {
   const Eigen::MatrixXd A = test::damped_mechanical_system(20, 3);
-  expect_bit_identical(eigen_dense(A), column_by_column(A));
+  expect_bit_identical(eigen_dense(A), test::column_by_column_eigen(A));
 }
