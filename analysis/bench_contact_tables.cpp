@@ -1,6 +1,7 @@
 // CPU time of building the contact tables of a profile pair (issue 9: under
 // 1 s), median of repeats, with the benchmark S1002/UIC60 1:40 profiles.
 // Usage: bench_contact_tables [repeats]   (from the repository root)
+#include "cpu_timing.hpp"
 #include "contact_geometry/contact_tables.hpp"
 #include "profiles/profile_readers.hpp"
 
@@ -13,11 +14,7 @@
 using namespace railstab;
 
 namespace {
-double cpu_seconds() {
-  timespec t{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
-}
+using bench::cpu_seconds;
 }  // namespace
 
 int main(int argc, char** argv) {

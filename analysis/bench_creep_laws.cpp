@@ -3,6 +3,7 @@
 // is the median over 15 repeats of (process CPU time of 2^16 evaluations on
 // 256 varied inputs) / 2^16, in ns per evaluation.
 //   build/bench_creep_laws
+#include "cpu_timing.hpp"
 #include "contact/creep/linear_kalker_creep.hpp"
 #include "contact/creep/polach_creep.hpp"
 #include "contact/creep/shen_hedrick_elkins_creep.hpp"
@@ -17,11 +18,7 @@ using namespace railstab;
 
 namespace {
 
-double cpu_seconds() {
-  timespec ts;
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
-}
+using bench::cpu_seconds;
 
 std::vector<CreepInput<double>> inputs() {
   const CreepCoefficients<double> f = kalker_coefficients(6e-3, 4e-3, 8.4e10, 0.25);

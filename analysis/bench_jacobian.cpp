@@ -19,6 +19,7 @@
 //     nothing else: a steady workload for perf or callgrind)
 //   build/bench_jacobian [cases-dir] --profile-jacobian N (N coloured AD
 //     Jacobians of the thesis vehicle, likewise)
+#include "cpu_timing.hpp"
 #include "support/column_by_column_eigen.hpp"
 #include "eigen/eigen_analysis.hpp"
 #include "equilibrium/equilibrium.hpp"
@@ -41,30 +42,13 @@ using namespace railstab;
 
 namespace {
 
-double cpu_seconds() {
-  timespec ts{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
-}
+using bench::cpu_seconds;
 
 // CPU seconds per call: a warm-up call, then 5 batches of at least
 // `batch_s` each; the median of the batch means.
 double seconds_per_call(const std::function<void()>& call, double batch_s = 0.2) {
   call();
-  std::vector<double> means;
-  for (int batch = 0; batch < 5; ++batch) {
-    long calls = 0;
-    const double start = cpu_seconds();
-    double elapsed = 0.0;
-    do {
-      call();
-      ++calls;
-      elapsed = cpu_seconds() - start;
-    } while (elapsed < batch_s);
-    means.push_back(elapsed / double(calls));
-  }
-  std::sort(means.begin(), means.end());
-  return means[2];
+  return bench::median_of_batches(call, 5, batch_s);
 }
 
 // --- eigen_dense as it was before issue 11 (reference for the timing):

@@ -4,6 +4,7 @@
 // (reading the scene), and a whole critical-speed search (no plots).
 // CPU time (CLOCK_PROCESS_CPUTIME_ID), 7 repeats, medians and ratios.
 //   build/bench_profile_contact [cases-dir]
+#include "cpu_timing.hpp"
 #include "eigen/eigen_analysis.hpp"
 #include "io/scene_loader.hpp"
 #include "linear/jacobian.hpp"
@@ -22,29 +23,9 @@ using namespace railstab;
 
 namespace {
 
-double cpu_seconds() {
-  timespec ts{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
-}
-
 // Median over 7 repeats of the CPU seconds per call (each repeat >= 0.1 s).
 double median_cpu_per_call(const std::function<void()>& f) {
-  long reps = 1;
-  for (;;) {
-    const double t0 = cpu_seconds();
-    for (long i = 0; i < reps; ++i) f();
-    if (cpu_seconds() - t0 > 0.1) break;
-    reps *= 4;
-  }
-  std::vector<double> samples;
-  for (int k = 0; k < 7; ++k) {
-    const double t0 = cpu_seconds();
-    for (long i = 0; i < reps; ++i) f();
-    samples.push_back((cpu_seconds() - t0) / double(reps));
-  }
-  std::nth_element(samples.begin(), samples.begin() + 3, samples.end());
-  return samples[3];
+  return bench::median_of_batches(f, 7, 0.1);
 }
 
 struct Figures {

@@ -25,6 +25,7 @@
 //                                              N cars at 100 m/s (ARPACK restarts per
 //                                              shift), one 12-speed search, a bisection
 //                                              105..115 m/s with and without tracking
+#include "cpu_timing.hpp"
 #include "eigen/band_eigen.hpp"
 #include "eigen/eigen_analysis.hpp"
 #include "equilibrium/equilibrium.hpp"
@@ -51,11 +52,7 @@ using namespace railstab;
 
 namespace {
 
-double cpu_seconds() {
-  timespec ts{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
-}
+using bench::cpu_seconds;
 
 // CPU seconds per call: a first call; if it took under 2 s, 5 batches of at
 // least 0.2 s each and the median of the batch means; else the first call.
@@ -68,20 +65,7 @@ Timing time_call(const std::function<void()>& call) {
   call();
   const double first = cpu_seconds() - t0;
   if (first > 2.0) return {first, false};
-  std::vector<double> means;
-  for (int batch = 0; batch < 5; ++batch) {
-    long calls = 0;
-    const double start = cpu_seconds();
-    double elapsed = 0.0;
-    do {
-      call();
-      ++calls;
-      elapsed = cpu_seconds() - start;
-    } while (elapsed < 0.2);
-    means.push_back(elapsed / double(calls));
-  }
-  std::sort(means.begin(), means.end());
-  return {means[2], true};
+  return {bench::median_of_batches(call), true};
 }
 
 // The train of cases/thesis_train_4.toml with `cars` cars, its reference

@@ -13,6 +13,8 @@
 #include "model/equations_of_motion.hpp"
 #include "setup/build_model.hpp"
 
+#include "support/state_index.hpp"
+
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -31,13 +33,6 @@ std::string scene_text() {
 const Model& vehicle() {
   static const Model model = build_model(load_scene_file(kScene));
   return model;
-}
-
-int state_of(const Model& m, const std::string& name) {
-  for (int i = 0; i < m.state_size(); ++i)
-    if (m.state_name(i) == name) return i;
-  ADD_FAILURE() << "no state " << name;
-  return 0;
 }
 
 }  // namespace
@@ -63,7 +58,7 @@ TEST(ProfileContact, TangentEquilibriumCarriesTheWeightSymmetrically) {
   for (int b = 0; b < 4; ++b) {
     EXPECT_GT(load[b][0], 0.0);
     EXPECT_NEAR(load[b][0], load[b][1], 1e-6 * load[b][0]) << "wheelset " << b;
-    EXPECT_NEAR(x(state_of(model, model.bodies[size_t(b)].name + ".y_m")), 0.0, 1e-9);
+    EXPECT_NEAR(x(test::state_index(model, model.bodies[size_t(b)].name + ".y_m")), 0.0, 1e-9);
   }
 }
 
@@ -76,9 +71,9 @@ TEST(ProfileContact, AdJacobianMatchesCentralDifferencesFromTreadToFlange) {
   const Model& model = vehicle();
   const double V = 30.0;
   Eigen::VectorXd x0 = lowered_nominal_state(model, V);
-  const int y = state_of(model, "wheelset1.y_m"), z = state_of(model, "wheelset1.z_m");
-  const std::vector<int> columns = {y, z, state_of(model, "wheelset1.roll_rad"),
-                                    state_of(model, "wheelset1.yaw_rad")};
+  const int y = test::state_index(model, "wheelset1.y_m"), z = test::state_index(model, "wheelset1.z_m");
+  const std::vector<int> columns = {y, z, test::state_index(model, "wheelset1.roll_rad"),
+                                    test::state_index(model, "wheelset1.yaw_rad")};
   const std::vector<int> rows = {model.n_coordinates + y, model.n_coordinates + z,
                                  model.n_coordinates + columns[2],
                                  model.n_coordinates + columns[3]};

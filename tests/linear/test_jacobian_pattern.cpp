@@ -15,6 +15,8 @@
 #include "model/scene_builders.hpp"
 #include "setup/prepare_scene.hpp"
 
+#include "support/state_index.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -232,12 +234,7 @@ TEST(JacobianPattern, CouplingTestModel) {
   // spin angle feeds nothing, its spin rate does.
   const SparsityPattern p = rhs_jacobian_pattern(model);
   const int n = model.n_coordinates;
-  auto state = [&](const std::string& name) {
-    for (int i = 0; i < model.state_size(); ++i)
-      if (model.state_name(i) == name) return i;
-    ADD_FAILURE() << "no state " << name;
-    return 0;
-  };
+  auto state = [&](const std::string& name) { return test::state_index(model, name); };
   EXPECT_FALSE(p.contains(state("d.y_m/s"), state("a.y_m")));
   EXPECT_FALSE(p.contains(state("a.y_m/s"), state("d.y_m")));
   EXPECT_TRUE(p.contains(state("d.y_m/s"), state("d.roll_rad")));

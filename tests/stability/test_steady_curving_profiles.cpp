@@ -17,6 +17,8 @@
 #include "setup/build_model.hpp"
 #include "setup/prepare_scene.hpp"
 
+#include "support/state_index.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -27,13 +29,6 @@ using namespace railstab;
 namespace {
 
 const std::string kScene = std::string(RAILSTAB_CASES_DIR) + "/thesis_vehicle_s1002_tangent.toml";
-
-int state_of(const Model& m, const std::string& name) {
-  for (int i = 0; i < m.state_size(); ++i)
-    if (m.state_name(i) == name) return i;
-  ADD_FAILURE() << "no state " << name;
-  return 0;
-}
 
 }  // namespace
 
@@ -88,7 +83,7 @@ TEST(SteadyCurvingProfiles, ForcesBalanceWeightAndCentripetalForce) {
   EXPECT_GT(flange_load_N, 1e3);
   EXPECT_GT(flange_lateral_N, 0.0);
   // The leading wheelset runs out towards the outer rail by about 5.6 mm.
-  const double y1 = eq.state(state_of(model, "wheelset1.y_m"));
+  const double y1 = eq.state(test::state_index(model, "wheelset1.y_m"));
   EXPECT_LT(y1, -4.5e-3);
   EXPECT_GT(y1, -7.0e-3);
 }
@@ -121,11 +116,11 @@ TEST(SteadyCurvingProfiles, EquilibriumIsWhereTheSimulatedVehicleSettles) {
   for (const char* body : {"wheelset1", "wheelset2", "wheelset3", "wheelset4", "bogie1",
                            "bogie2", "carbody"}) {
     const std::string b(body);
-    EXPECT_NEAR(eq.state(state_of(s.model, b + ".y_m")),
-                settled(state_of(s.model, b + ".y_m")), 1e-5)
+    EXPECT_NEAR(eq.state(test::state_index(s.model, b + ".y_m")),
+                settled(test::state_index(s.model, b + ".y_m")), 1e-5)
         << b;
-    EXPECT_NEAR(eq.state(state_of(s.model, b + ".yaw_rad")),
-                settled(state_of(s.model, b + ".yaw_rad")), 1e-5)
+    EXPECT_NEAR(eq.state(test::state_index(s.model, b + ".yaw_rad")),
+                settled(test::state_index(s.model, b + ".yaw_rad")), 1e-5)
         << b;
   }
 }
