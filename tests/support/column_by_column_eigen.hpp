@@ -5,6 +5,7 @@
 // faster version must match bit for bit (tests/eigen/test_eigen_dense_pairs.cpp)
 // and the baseline of its timing (analysis/bench_jacobian.cpp, which also
 // asks for the old cost: the eigenvector matrix rebuilt per column).
+#include "eigen/balance.hpp"
 #include "eigen/eigen_analysis.hpp"
 
 #include <Eigen/Dense>
@@ -29,14 +30,19 @@ inline Eigen::VectorXcd reference_phase(Eigen::VectorXcd v) {
 inline std::vector<EigenPair> column_by_column_eigen(const Eigen::MatrixXd& A,
                                                      bool eigenvectors_per_column = false) {
   using Complex = std::complex<double>;
-  Eigen::EigenSolver<Eigen::MatrixXd> solver(A, true);
+  // The same balanced QR as eigen_dense (eigen/balance.hpp): what is
+  // compared is the post-processing.
+  const BalancedMatrix balanced = balance(A);
+  Eigen::EigenSolver<Eigen::MatrixXd> solver(balanced.matrix, true);
+  const Eigen::VectorXcd D_diagonal = balanced.scaling.cast<std::complex<double>>();
+  const auto D = D_diagonal.asDiagonal();
   Eigen::MatrixXcd vectors;
-  if (!eigenvectors_per_column) vectors = solver.eigenvectors();
+  if (!eigenvectors_per_column) vectors = D * solver.eigenvectors();
   const double norm_A = A.norm();
   std::vector<EigenPair> pairs;
   for (Eigen::Index j = 0; j < A.rows(); ++j) {
     const Eigen::VectorXcd column =
-        eigenvectors_per_column ? Eigen::VectorXcd(solver.eigenvectors().col(j)) : vectors.col(j);
+        eigenvectors_per_column ? Eigen::VectorXcd(D * solver.eigenvectors().col(j)) : vectors.col(j);
     EigenPair p{solver.eigenvalues()(j), reference_phase(column), 0.0};
     const Eigen::VectorXd Av_re = A * p.vector.real(), Av_im = A * p.vector.imag();
     const Eigen::VectorXcd Av = Av_re.cast<Complex>() + Complex(0.0, 1.0) * Av_im.cast<Complex>();
