@@ -36,8 +36,23 @@ Eigen::MatrixXd suspension_stiffness(const Model& model, double speed_m_per_s, d
   return -(coordinate_inertia(model).asDiagonal() * d_acc_d_q);
 }
 
+ModeShapeBasis mode_shape_basis(const Model& model, const LinearModel& lin) {
+  ModeShapeBasis basis;
+  basis.kept_of.assign(size_t(model.state_size()), -1);
+  for (size_t i = 0; i < lin.kept_states.size(); ++i)
+    basis.kept_of[size_t(lin.kept_states[i])] = int(i);
+  basis.inertia = coordinate_inertia(model);
+  return basis;
+}
+
 ModeShape mode_shape(const Model& model, const LinearModel& lin, const Eigen::MatrixXd& stiffness,
                      std::complex<double> lambda, const Eigen::VectorXcd& vector) {
+  return mode_shape(model, lin, mode_shape_basis(model, lin), stiffness, lambda, vector);
+}
+
+ModeShape mode_shape(const Model& model, const LinearModel& lin, const ModeShapeBasis& basis,
+                     const Eigen::MatrixXd& stiffness, std::complex<double> lambda,
+                     const Eigen::VectorXcd& vector) {
   const int n = model.n_coordinates;
   if (vector.size() != Eigen::Index(lin.kept_states.size()))
     throw std::invalid_argument("mode_shape: eigenvector has " + std::to_string(vector.size()) +
@@ -47,8 +62,7 @@ ModeShape mode_shape(const Model& model, const LinearModel& lin, const Eigen::Ma
   if (with_potential && (stiffness.rows() != n || stiffness.cols() != n))
     throw std::invalid_argument("mode_shape: stiffness must be " + std::to_string(n) + " x " +
                                 std::to_string(n) + " (one row per free coordinate) or empty");
-  std::vector<int> kept_of(size_t(model.state_size()), -1);
-  for (size_t i = 0; i < lin.kept_states.size(); ++i) kept_of[size_t(lin.kept_states[i])] = int(i);
+  const std::vector<int>& kept_of = basis.kept_of;
   Eigen::VectorXcd q = Eigen::VectorXcd::Zero(n), u = Eigen::VectorXcd::Zero(n);
   for (int k = 0; k < n; ++k) {
     const int iq = kept_of[size_t(k)], iu = kept_of[size_t(n + k)];
@@ -81,7 +95,7 @@ ModeShape mode_shape(const Model& model, const LinearModel& lin, const Eigen::Ma
     u *= s;
     q(ref) = 1.0;  // exactly, not 1 + round-off
   }
-  const Eigen::VectorXd m = coordinate_inertia(model);
+  const Eigen::VectorXd& m = basis.inertia;
   double kinetic = 0.0, potential = 0.0, potential_scale = 0.0;
   shape.coordinates.resize(size_t(n));
   for (int k = 0; k < n; ++k) {

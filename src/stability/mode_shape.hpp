@@ -81,6 +81,19 @@ Eigen::VectorXd coordinate_inertia(const Model& model);
 ModeShape mode_shape(const Model& model, const LinearModel& lin, const Eigen::MatrixXd& stiffness,
                      std::complex<double> lambda, const Eigen::VectorXcd& vector);
 
+// What mode_shape needs of the model and the linear model besides the
+// eigenpair, formed once for all the modes of one linearisation (describing
+// every mode at every speed of a search: issue 11).
+struct ModeShapeBasis {
+  std::vector<int> kept_of;  // state index -> index in lin.kept_states, -1 if removed
+  Eigen::VectorXd inertia;   // coordinate_inertia(model)
+};
+ModeShapeBasis mode_shape_basis(const Model& model, const LinearModel& lin);
+// As mode_shape, with the basis formed by mode_shape_basis(model, lin).
+ModeShape mode_shape(const Model& model, const LinearModel& lin, const ModeShapeBasis& basis,
+                     const Eigen::MatrixXd& stiffness, std::complex<double> lambda,
+                     const Eigen::VectorXcd& vector);
+
 // "wheelset1 lateral": the body and coordinate of a CoordinateMotion.
 std::string coordinate_label(const Model& model, const CoordinateMotion& c);
 

@@ -45,9 +45,11 @@ std::vector<ModeReport> describe_modes(const Model& model, const LinearModel& li
   // linearize() sets norm_A (dense or sparse A); a hand-made LinearModel may not.
   const double zero = 1e-9 * std::max(1.0, lin.norm_A > 0.0 ? lin.norm_A : lin.A.norm());
   const BodyRoles roles = body_roles(model);
+  const ModeShapeBasis basis = mode_shape_basis(model, lin);
   std::vector<ModeReport> modes;
   modes.reserve(pairs.size());
-  for (const EigenPair& p : pairs) {
+  for (size_t i = 0; i < pairs.size(); ++i) {
+    const EigenPair& p = pairs[i];
     ModeReport m;
     m.eigenvalue = p.value;
     const ModeInfo info = mode_info(p.value);
@@ -56,7 +58,21 @@ std::vector<ModeReport> describe_modes(const Model& model, const LinearModel& li
     m.residual = p.residual;
     m.neutral = std::abs(p.value) <= zero;
     m.vector = p.vector;
-    m.shape = mode_shape(model, lin, Eigen::MatrixXd(), p.value, p.vector);
+    // The exact conjugate of the pair before (eigen_dense returns a complex
+    // pair's partner so): its shape is that pair's with the displacements
+    // conjugated. Every step of mode_shape maps conjugate input to
+    // conjugate output exactly (moduli and kinetic shares are the same, the
+    // reference coordinate too; complex products and quotients, with or
+    // without fused multiply-add, negate only their imaginary part), so
+    // this is what mode_shape would return, bit for bit
+    // (tests/stability/test_mode_shapes.cpp), at no cost.
+    if (i > 0 && p.value.imag() != 0.0 && p.value == std::conj(pairs[i - 1].value) &&
+        p.vector == pairs[i - 1].vector.conjugate()) {
+      m.shape = modes.back().shape;
+      for (CoordinateMotion& c : m.shape.coordinates) c.displacement = std::conj(c.displacement);
+    } else {
+      m.shape = mode_shape(model, lin, basis, Eigen::MatrixXd(), p.value, p.vector);
+    }
     const std::vector<CoordinateMotion>& coords = m.shape.coordinates;
     std::vector<int> order(coords.size());
     for (size_t k = 0; k < coords.size(); ++k) {
@@ -64,12 +80,17 @@ std::vector<ModeReport> describe_modes(const Model& model, const LinearModel& li
         m.lateral_share += coords[k].kinetic_share;
       order[k] = int(k);
     }
-    // The six largest shares, ties in coordinate order (a stable sort of
-    // indices: the body names are copied for those six only).
-    std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-      return coords[size_t(a)].kinetic_share > coords[size_t(b)].kinetic_share;
-    });
-    if (order.size() > 6) order.resize(6);
+    // The six largest shares, ties in coordinate order (the body names are
+    // copied for those six only): a partial sort by (share descending,
+    // index ascending) picks exactly what a stable sort would put first.
+    const size_t top = std::min<size_t>(6, order.size());
+    std::partial_sort(order.begin(), order.begin() + std::ptrdiff_t(top), order.end(),
+                      [&](int a, int b) {
+                        const double sa = coords[size_t(a)].kinetic_share;
+                        const double sb = coords[size_t(b)].kinetic_share;
+                        return sa > sb || (sa == sb && a < b);
+                      });
+    order.resize(top);
     for (int k : order) {
       const CoordinateMotion& c = coords[size_t(k)];
       m.participation.push_back({model.bodies[size_t(c.body)].name, c.coordinate, c.kinetic_share});

@@ -13,8 +13,12 @@
 #include "stability/mode_names.hpp"
 #include "stability/mode_shape.hpp"
 #include "stability/modes.hpp"
+#include "setup/prepare_scene.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
 using namespace railstab;
 
@@ -215,4 +219,45 @@ TEST(ModeRanking, LeastDampedIgnoresADecayingRealRootThatHasTheLargestRealPart) 
   modes.back().lateral_share = 0.1;
   EXPECT_EQ(least_damped_mode(modes, 20.0), 1);
   EXPECT_EQ(least_damped_mode(modes, 20.0, 0.0), 3);
+}
+
+// describe_modes takes a complex pair's partner's shape as the conjugate of
+// the pair's, forms the shape basis once, and picks the six largest shares
+// by a partial sort: each must give what the plain computation gives (the
+// shape of every mode by mode_shape on its own, the participation by a
+// stable sort of all shares), bit for bit, on the thesis vehicle (37
+// complex pairs).
+TEST(ModeShape, DescribeModesShortcutsMatchThePlainComputation) {
+  const PreparedScene s =
+      prepare_scene(std::string(RAILSTAB_CASES_DIR) + "/thesis_vehicle_tangent.toml", {});
+  const LinearModel lin = linearize(s.model, s.speed_m_per_s, s.equilibrium.state);
+  const std::vector<EigenPair> pairs = eigen_dense(lin.A);
+  const std::vector<ModeReport> modes = describe_modes(s.model, lin, pairs);
+  ASSERT_EQ(modes.size(), pairs.size());
+  int partners = 0;
+  for (size_t i = 0; i < pairs.size(); ++i) {
+    if (i > 0 && pairs[i].value == std::conj(pairs[i - 1].value)) ++partners;
+    const ModeShape plain =
+        mode_shape(s.model, lin, Eigen::MatrixXd(), pairs[i].value, pairs[i].vector);
+    const ModeShape& got = modes[i].shape;
+    EXPECT_EQ(got.reference, plain.reference) << i;
+    ASSERT_EQ(got.coordinates.size(), plain.coordinates.size());
+    std::vector<int> order;
+    for (size_t k = 0; k < plain.coordinates.size(); ++k) {
+      EXPECT_EQ(got.coordinates[k].displacement, plain.coordinates[k].displacement) << i << " " << k;
+      EXPECT_EQ(got.coordinates[k].kinetic_share, plain.coordinates[k].kinetic_share) << i << " " << k;
+      order.push_back(int(k));
+    }
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+      return plain.coordinates[size_t(a)].kinetic_share > plain.coordinates[size_t(b)].kinetic_share;
+    });
+    ASSERT_EQ(modes[i].participation.size(), std::min<size_t>(6, order.size()));
+    for (size_t k = 0; k < modes[i].participation.size(); ++k) {
+      const CoordinateMotion& c = plain.coordinates[size_t(order[k])];
+      EXPECT_EQ(modes[i].participation[k].body, s.model.bodies[size_t(c.body)].name) << i;
+      EXPECT_EQ(modes[i].participation[k].coordinate, c.coordinate) << i;
+      EXPECT_EQ(modes[i].participation[k].share, c.kinetic_share) << i;
+    }
+  }
+  EXPECT_GE(partners, 30);  // the conjugate shortcut was exercised
 }
