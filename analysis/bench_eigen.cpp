@@ -2,11 +2,11 @@
 // first-order form, A = [[0, I], [-M^-1 K, -M^-1 C]], of 100 and 200 states:
 // all eigenpairs by eigen_dense against the 12 nearest sigma = 0.5 + 5i by
 // eigen_arpack_shift_invert. Prints the time per call and dense / ARPACK.
+#include "cpu_timing.hpp"
 #include "eigen/eigen_analysis.hpp"
 #include "eigen/synthetic_systems.hpp"  // tests/
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <functional>
 #include <limits>
@@ -20,25 +20,12 @@ using railstab::EigenPair;
 using Complex = std::complex<double>;
 using railstab::test::damped_mechanical_system;
 
-// Seconds per call: calls repeated until a batch lasts at least 0.2 s, five
-// batches, median of the batch means (robust to a stray slow batch).
+// CPU seconds per call (analysis/cpu_timing.hpp): a warm-up call
+// (first-touch allocations, caches), then five batches of at least 0.2 s,
+// the median of the batch means.
 double seconds_per_call(const std::function<void()>& call) {
-  using Clock = std::chrono::steady_clock;
-  call();  // warm-up: first-touch allocations, caches
-  std::vector<double> batch_means;
-  for (int batch = 0; batch < 5; ++batch) {
-    int calls = 0;
-    const Clock::time_point start = Clock::now();
-    double elapsed = 0.0;
-    do {
-      call();
-      ++calls;
-      elapsed = std::chrono::duration<double>(Clock::now() - start).count();
-    } while (elapsed < 0.2);
-    batch_means.push_back(elapsed / calls);
-  }
-  std::sort(batch_means.begin(), batch_means.end());
-  return batch_means[batch_means.size() / 2];
+  call();
+  return railstab::bench::median_of_batches(call);
 }
 
 // Largest relative difference between ARPACK's eigenvalues and the nearest
