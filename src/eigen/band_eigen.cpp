@@ -210,7 +210,13 @@ KrylovSchurResult krylov_schur_largest(Op&& op, Eigen::Index n, int k, int m, do
         orthogonalise(j + 1);
       }
       H(j + 1, j) = beta;
-      V.col(j + 1) = w / w.norm();
+      // (With j + 1 = n there is no direction left: w is round-off, and b = 0
+      // makes every Ritz pair exact, so the cycle ends converged.)
+      const double norm_next = w.norm();
+      if (norm_next > 0.0)
+        V.col(j + 1) = w / norm_next;
+      else
+        V.col(j + 1).setZero();
     }
     const int wanted = std::min(k, m - 2);
     // The wanted and half of the rest (the next largest) are kept at a
