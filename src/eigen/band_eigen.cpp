@@ -9,6 +9,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <numeric>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -147,24 +148,22 @@ void swap_schur_diagonal(Eigen::MatrixXcd& T, Eigen::MatrixXcd& Q, Eigen::Index 
   T(i + 1, i + 1) = t11;
 }
 
-// Eigenvectors of the leading c x c block of the upper triangular T (column
-// i: support 0..i, y_i = 1), by back substitution; a near-zero pivot (two
-// nearly equal diagonal entries) is raised to eps |theta| as LAPACK's ztrevc.
-Eigen::MatrixXcd triangular_eigenvectors(const Eigen::MatrixXcd& T, Eigen::Index c) {
-  Eigen::MatrixXcd Y = Eigen::MatrixXcd::Zero(c, c);
-  for (Eigen::Index i = 0; i < c; ++i) {
-    const Complex theta = T(i, i);
-    const double small = std::numeric_limits<double>::epsilon() * std::max(std::abs(theta), 1e-300);
-    Y(i, i) = 1.0;
-    for (Eigen::Index r = i - 1; r >= 0; --r) {
-      Complex sum = 0.0;
-      for (Eigen::Index q = r + 1; q <= i; ++q) sum += T(r, q) * Y(q, i);
-      Complex pivot = T(r, r) - theta;
-      if (std::abs(pivot) < small) pivot = small;
-      Y(r, i) = -sum / pivot;
-    }
+// The eigenvector of the upper triangular T for T(i, i) (support 0..i,
+// component i = 1), by back substitution; a near-zero pivot (two nearly
+// equal diagonal entries) is raised to eps |theta| as LAPACK's ztrevc.
+Eigen::VectorXcd triangular_eigenvector(const Eigen::MatrixXcd& T, Eigen::Index i) {
+  Eigen::VectorXcd y = Eigen::VectorXcd::Zero(i + 1);
+  const Complex theta = T(i, i);
+  const double small = std::numeric_limits<double>::epsilon() * std::max(std::abs(theta), 1e-300);
+  y(i) = 1.0;
+  for (Eigen::Index r = i - 1; r >= 0; --r) {
+    Complex sum = 0.0;
+    for (Eigen::Index q = r + 1; q <= i; ++q) sum += T(r, q) * y(q);
+    Complex pivot = T(r, r) - theta;
+    if (std::abs(pivot) < small) pivot = small;
+    y(r) = -sum / pivot;
   }
-  return Y;
+  return y;
 }
 
 template <class Op>
@@ -222,33 +221,52 @@ KrylovSchurResult krylov_schur_largest(Op&& op, Eigen::Index n, int k, int m, do
     // The wanted and half of the rest (the next largest) are kept at a
     // restart.
     const int keep = std::min(m - 1, std::max(wanted + 1, (wanted + m) / 2));
-    // Schur form of S, the `keep` largest |theta| first, in descending
-    // order (selection by adjacent swaps).
+    // Schur form of S with the `keep` largest |theta| in its leading block
+    // (a stable partition by adjacent swaps: only kept past unkept), then
+    // the wanted: the `wanted` largest of that block.
     const Eigen::ComplexSchur<Eigen::MatrixXcd> schur(H.topRows(m));
     T = schur.matrixT();
     Q = schur.matrixU();
-    for (Eigen::Index i = 0; i < keep; ++i) {
-      Eigen::Index best = i;
-      for (Eigen::Index j = i + 1; j < m; ++j)
-        if (std::abs(T(j, j)) > std::abs(T(best, best))) best = j;
-      for (Eigen::Index j = best; j > i; --j) swap_schur_diagonal(T, Q, j - 1);
+    std::vector<Eigen::Index> by_magnitude(static_cast<size_t>(m));
+    std::iota(by_magnitude.begin(), by_magnitude.end(), Eigen::Index{0});
+    const auto larger = [&T](Eigen::Index a, Eigen::Index b) {
+      return std::abs(T(a, a)) > std::abs(T(b, b));
+    };
+    std::nth_element(by_magnitude.begin(), by_magnitude.begin() + keep, by_magnitude.end(), larger);
+    std::vector<char> kept(static_cast<size_t>(m), 0);
+    for (int i = 0; i < keep; ++i) kept[static_cast<size_t>(by_magnitude[static_cast<size_t>(i)])] = 1;
+    for (Eigen::Index j = 0, front = 0; j < m; ++j) {
+      if (!kept[static_cast<size_t>(j)]) continue;
+      for (Eigen::Index l = j; l > front; --l) {
+        swap_schur_diagonal(T, Q, l - 1);
+        std::swap(kept[static_cast<size_t>(l - 1)], kept[static_cast<size_t>(l)]);
+      }
+      ++front;
     }
+    std::vector<Eigen::Index> order(static_cast<size_t>(keep));
+    std::iota(order.begin(), order.end(), Eigen::Index{0});
+    std::sort(order.begin(), order.end(), larger);
+    order.resize(static_cast<size_t>(wanted));
     // b^H Q: H's last row is beta e_m^T.
     const Eigen::RowVectorXcd bQ = H(m, m - 1) * Q.row(m - 1);
-    const Eigen::MatrixXcd Y = triangular_eigenvectors(T, wanted);
+    std::vector<Eigen::VectorXcd> Y;
     bool converged = true;
-    for (int i = 0; i < wanted && converged; ++i) {
-      const Complex projected = bQ.head(i + 1) * Y.col(i).head(i + 1);
-      const double residual = std::abs(projected) / Y.col(i).head(i + 1).norm();
-      converged = residual <= tolerance * std::abs(T(i, i));
+    for (Eigen::Index i : order) {
+      Y.push_back(triangular_eigenvector(T, i));
+      const Complex projected = bQ.head(i + 1) * Y.back();
+      converged = std::abs(projected) / Y.back().norm() <= tolerance * std::abs(T(i, i));
+      if (!converged) break;
     }
     if (converged || restart >= max_restarts) {
       out.converged = converged;
       out.restarts = restart;
-      out.vectors = V.leftCols(m) * (Q.leftCols(wanted) * Y);
-      for (int i = 0; i < wanted; ++i) {
+      out.vectors.resize(n, wanted);
+      for (int c = 0; c < wanted; ++c) {
+        const Eigen::Index i = order[static_cast<size_t>(c)];
+        if (size_t(c) >= Y.size()) Y.push_back(triangular_eigenvector(T, i));
         out.values.push_back(T(i, i));
-        out.vectors.col(i).normalize();
+        out.vectors.col(c) = V.leftCols(m) * (Q.leftCols(i + 1) * Y[size_t(c)]);
+        out.vectors.col(c).normalize();
       }
       return out;
     }
