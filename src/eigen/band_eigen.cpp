@@ -107,13 +107,15 @@ Complex factorise_near(ShiftedSparseLU& lu, Complex sigma, double nudge) {
 // operator OP given as y = OP x. The Krylov relation
 //   OP V_m = V_m S + v_{m+1} b^H       (V orthonormal, n x (m + 1))
 // is kept in H = [S; b^H] ((m + 1) x m). Each cycle expands the basis to m
-// by Arnoldi steps (classical Gram-Schmidt twice, Eigen's GEMV: the cost of
-// the whole method is here), takes the Schur form S = Q T Q^H with |T_ii|
-// descending, and keeps the leading p Schur vectors: V_p <- V_m Q_p, S <-
+// by Arnoldi steps (classical Gram-Schmidt twice, Eigen's GEMV), takes the
+// Schur form S = Q T Q^H (Eigen's ComplexSchur) reordered so that the p
+// largest |T_ii| lead (unitary swaps of adjacent diagonal entries, as
+// LAPACK's ztrexc), and keeps those p Schur vectors: V_p <- V_m Q_p, S <-
 // T_pp, b^H <- b^H Q_p, v_{p+1} <- v_{m+1}. A Ritz pair (theta_i, V_m Q y_i),
 // T y_i = theta_i y_i, has residual ||OP x - theta x|| = |b^H Q y_i| ||y_i||^-1
 // (||x|| = ||y_i||); it has converged when that is <= tolerance |theta_i|
-// (ARPACK's test).
+// (ARPACK's test). The wanted: the k largest |T_ii|, all converged; the
+// next largest kept as well (p = (k + m) / 2).
 // It replaces ARPACK's znaupd here: a restart that keeps the largest Ritz
 // vectors (as ARPACK's exact shifts do) and the same convergence test, but
 // the orthogonalisation runs in Eigen's vectorised GEMV instead of the
@@ -258,16 +260,21 @@ KrylovSchurResult krylov_schur_largest(Op&& op, Eigen::Index n, int k, int m, do
       if (!converged) break;
     }
     if (converged || restart >= max_restarts) {
+      // All wanted pairs; out of restarts, those of them that converged
+      // (as ARPACK: then nothing is proven about the rest).
       out.converged = converged;
       out.restarts = restart;
-      out.vectors.resize(n, wanted);
-      for (int c = 0; c < wanted; ++c) {
-        const Eigen::Index i = order[static_cast<size_t>(c)];
-        if (size_t(c) >= Y.size()) Y.push_back(triangular_eigenvector(T, i));
+      std::vector<Eigen::VectorXcd> x;
+      for (size_t c = 0; c < order.size(); ++c) {
+        const Eigen::Index i = order[c];
+        if (c >= Y.size()) Y.push_back(triangular_eigenvector(T, i));
+        const Complex projected = bQ.head(i + 1) * Y[c];
+        if (!(std::abs(projected) / Y[c].norm() <= tolerance * std::abs(T(i, i)))) continue;
         out.values.push_back(T(i, i));
-        out.vectors.col(c) = V.leftCols(m) * (Q.leftCols(i + 1) * Y[size_t(c)]);
-        out.vectors.col(c).normalize();
+        x.push_back((V.leftCols(m) * (Q.leftCols(i + 1) * Y[c])).normalized());
       }
+      out.vectors.resize(n, Eigen::Index(x.size()));
+      for (size_t c = 0; c < x.size(); ++c) out.vectors.col(Eigen::Index(c)) = x[c];
       return out;
     }
     p = keep;
@@ -301,7 +308,7 @@ NearestEigenpairs nearest_eigenpairs(const Eigen::SparseMatrix<double>& A, doubl
   work.restarts = ks.restarts;
   work.operator_applications = ks.operator_applications;
   work.eigenvalues = int(ks.values.size());
-  const int converged = ks.converged ? int(ks.values.size()) : 0;
+  const int converged = int(ks.values.size());  // all returned have converged
   const bool all_converged = ks.converged;
   std::vector<EigenPair>& pairs = out.pairs;
   for (int j = 0; j < converged; ++j) {
