@@ -25,6 +25,9 @@
 //                                              N cars at 100 m/s (ARPACK restarts per
 //                                              shift), one 12-speed search, a bisection
 //                                              105..115 m/s with and without tracking
+//   build/bench_scaling --band N [cases-dir]    only the band eigen-solve of N cars at
+//                                              100 m/s, per shift, and the dense
+//                                              eigenvalues in the box for comparison
 #include "cpu_timing.hpp"
 #include "eigen/band_eigen.hpp"
 #include "eigen/eigen_analysis.hpp"
@@ -44,6 +47,7 @@
 #include <cstdio>
 #include <ctime>
 #include <functional>
+#include <numbers>
 #include <regex>
 #include <string>
 #include <vector>
@@ -182,12 +186,83 @@ int profile_run(const std::string& cases_dir, int cars) {
   return 0;
 }
 
+// The band solve alone at 100 m/s (CPU of 3 solves, median), per-shift
+// work, and every dense eigenvalue in the box matched by a band one (1e-8
+// relative) and vice versa.
+int band_run(const std::string& cases_dir, int cars) {
+  const PreparedScene s = prepare_scene(train_scene(cases_dir, cars));
+  const double V = 100.0;
+  SpeedStability sweep(s.model, s.equilibrium.state, s.speed_m_per_s);
+  const StabilityPoint at_v = sweep.at(V);
+  const RhsJacobianPlan plan = plan_rhs_jacobian(s.model);
+  LinearizationOptions lo;
+  lo.jacobian_plan = &plan;
+  lo.sparse = true;
+  const LinearModel lin = linearize(s.model, V, at_v.equilibrium.state, lo);
+  const BandCoverOptions o;
+  std::vector<double> cpu;
+  BandEigenResult band;
+  for (int run = 0; run < 3; ++run) {
+    const double t0 = cpu_seconds();
+    band = eigen_sparse_band(lin.A_sparse, o);
+    cpu.push_back(cpu_seconds() - t0);
+  }
+  std::sort(cpu.begin(), cpu.end());
+  int ops = 0, restarts = 0;
+  for (const ShiftDisc& d : band.discs) {
+    std::printf("  shift %+.3f%+.3fi radius %.3f k %d: %d restarts, %d OP applications\n",
+                d.shift.real(), d.shift.imag(), d.radius, d.eigenvalues, d.restarts,
+                d.operator_applications);
+    ops += d.operator_applications;
+    restarts += d.restarts;
+  }
+  std::printf("N = %d (%d linear states): band solve %.3f s CPU (median of 3: %.3f %.3f %.3f), "
+              "%zu solves, %zu modes, %d restarts, %d OP applications, covered %d\n",
+              cars, lin.states(), cpu[1], cpu[0], cpu[1], cpu[2], band.discs.size(),
+              band.pairs.size(), restarts, ops, int(band.covered));
+  const std::vector<EigenPair> dense = eigen_dense(Eigen::MatrixXd(lin.A_sparse));
+  const double top = 2.0 * std::numbers::pi * o.max_frequency_hz;
+  int in_box = 0, missing = 0, extra = 0;
+  std::vector<bool> used(band.pairs.size(), false);
+  for (const EigenPair& p : dense) {
+    const std::complex<double> l = p.value;
+    if (!(l.real() >= o.min_real_part_per_s && l.real() <= o.max_real_part_per_s &&
+          l.imag() >= -1e-12 * std::max(1.0, std::abs(l)) && l.imag() <= top))
+      continue;
+    ++in_box;
+    int best = -1;
+    double best_d = 1e300;
+    for (size_t j = 0; j < band.pairs.size(); ++j)
+      if (!used[j] && std::abs(band.pairs[j].value - l) < best_d) {
+        best_d = std::abs(band.pairs[j].value - l);
+        best = int(j);
+      }
+    if (best < 0 || best_d > 1e-8 * std::max(1.0, std::abs(l))) {
+      ++missing;
+      std::printf("  missing %+.9f%+.9fi\n", l.real(), l.imag());
+    } else {
+      used[size_t(best)] = true;
+    }
+  }
+  for (const EigenPair& p : band.pairs) {
+    double best_d = 1e300;
+    for (const EigenPair& q : dense) best_d = std::min(best_d, std::abs(p.value - q.value));
+    if (best_d > 1e-8 * std::max(1.0, std::abs(p.value))) ++extra;
+  }
+  std::printf("dense: %d eigenvalues in the box, %d missing from the band result, %d band values "
+              "not dense eigenvalues\n",
+              in_box, missing, extra);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   std::string cases_dir = "cases";
   if (argc >= 3 && std::string(argv[1]) == "--profile")
     return profile_run(argc >= 4 ? argv[3] : cases_dir, std::atoi(argv[2]));
+  if (argc >= 3 && std::string(argv[1]) == "--band")
+    return band_run(argc >= 4 ? argv[3] : cases_dir, std::atoi(argv[2]));
   if (argc >= 3 && std::string(argv[1]) == "--memory")
     return memory_run(argc >= 4 ? argv[3] : cases_dir, std::atoi(argv[2]));
   if (argc >= 2) cases_dir = argv[1];

@@ -5,7 +5,11 @@
 //  - the thesis vehicle and the four-car train: the sparse result equals the
 //    dense eigenvalues in the box (1e-8 relative), nothing missing or extra;
 //  - the train's critical speed is the same with the sparse and the dense
-//    solver (within the bisection tolerance).
+//    solver (within the bisection tolerance);
+//  - the Krylov-Schur Arnoldi behind both (band_eigen.cpp) on a non-normal
+//    matrix (Schur vectors are not eigenvectors there) and on one so small
+//    that the Krylov basis fills the whole space (an invariant subspace is
+//    reached): the k nearest known eigenvalues, nothing else.
 #include "eigen/band_eigen.hpp"
 #include "setup/prepare_scene.hpp"
 #include "stability/speed_analysis.hpp"
@@ -64,8 +68,76 @@ std::string compare_in_box(const std::vector<std::complex<double>>& reference,
   return out.str();
 }
 
+// The known block-diagonal spectrum made non-normal without moving an
+// eigenvalue: each 2 x 2 block is coupled to the next one above the
+// diagonal (block upper triangular: the eigenvalues are the diagonal
+// blocks'), coupling entries uniform in [-1, 1].
+test::KnownSpectrum non_normal_known_spectrum(unsigned seed, int complex_pairs) {
+  test::KnownSpectrum known = test::block_diagonal_known_spectrum(seed, complex_pairs);
+  std::mt19937 rng(seed + 1);
+  std::uniform_real_distribution<double> coupling(-1.0, 1.0);
+  for (int b = 0; b + 1 < complex_pairs; ++b)
+    for (int i = 0; i < 2; ++i)
+      for (int j = 0; j < 2; ++j) known.matrix.coeffRef(2 * b + i, 2 * b + 2 + j) = coupling(rng);
+  known.matrix.makeCompressed();
+  return known;
+}
+
+// The k reference eigenvalues nearest `shift`, nearest first.
+std::vector<std::complex<double>> nearest_reference(std::vector<std::complex<double>> reference,
+                                                    std::complex<double> shift) {
+  std::sort(reference.begin(), reference.end(), [&](auto a, auto b) {
+    return std::abs(a - shift) < std::abs(b - shift);
+  });
+  return reference;
+}
 
 }  // namespace
+
+TEST(BandEigen, NearestOnANonNormalMatrixAreTheKNearestKnownOnes) {
+  const test::KnownSpectrum known = non_normal_known_spectrum(5, 200);
+  const std::complex<double> shift(-2.0, 60.0);
+  const int k = 12;
+  const NearestEigenpairs near = eigen_sparse_nearest(known.matrix, shift, k);
+  ASSERT_EQ(int(near.pairs.size()), k);
+  const std::vector<std::complex<double>> reference = nearest_reference(known.eigenvalues, shift);
+  for (int j = 0; j < k; ++j) {
+    // Non-normal: eigenvalue condition numbers above 1, so 1e-8 relative
+    // rather than the normal matrices' 1e-10.
+    EXPECT_LT(std::abs(near.pairs[size_t(j)].value - reference[size_t(j)]),
+              1e-8 * std::abs(reference[size_t(j)]))
+        << j;
+    EXPECT_LT(near.pairs[size_t(j)].residual, 1e-10) << j;
+  }
+  EXPECT_GT(near.disc.radius, 0.0);
+  EXPECT_GT(std::abs(reference[size_t(k)] - shift), near.disc.radius);
+  // The whole box, too: every known eigenvalue in it, once.
+  BandCoverOptions o;
+  o.eigenvalues_per_shift = 8;
+  const BandEigenResult band = eigen_sparse_band(known.matrix, o);
+  ASSERT_TRUE(band.covered);
+  std::vector<EigenPair> in;
+  for (const EigenPair& p : band.pairs)
+    if (in_box(p.value, o)) in.push_back(p);
+  EXPECT_EQ(compare_in_box(known.eigenvalues, in, o, 1e-8), "");
+}
+
+TEST(BandEigen, NearestWhenTheKrylovBasisFillsTheWholeSpace) {
+  // n = 8, k = 6: the basis (at least 20 vectors, at most n) is all of C^8,
+  // so the Arnoldi reaches an invariant subspace and must stop cleanly.
+  const test::KnownSpectrum known = non_normal_known_spectrum(3, 4);
+  const std::complex<double> shift(0.0, 50.0);
+  const int k = 6;
+  const NearestEigenpairs near = eigen_sparse_nearest(known.matrix, shift, k);
+  ASSERT_EQ(int(near.pairs.size()), k);
+  const std::vector<std::complex<double>> reference = nearest_reference(known.eigenvalues, shift);
+  for (int j = 0; j < k; ++j)
+    EXPECT_LT(std::abs(near.pairs[size_t(j)].value - reference[size_t(j)]),
+              1e-9 * std::abs(reference[size_t(j)]))
+        << j;
+  EXPECT_GT(near.disc.radius, 0.0);
+  EXPECT_GT(std::abs(reference[size_t(k)] - shift), near.disc.radius);
+}
 
 TEST(BandEigen, FindsEveryKnownEigenvalueInTheBoxOnce) {
   // 300 blocks: eigenvalues a +- i b with a in [-20, 10], b in [0.5, 200]
