@@ -111,7 +111,7 @@ StabilityPoint SpeedStability::tracking(double speed_m_per_s, std::complex<doubl
     p.tracked_radius_per_s = near.disc.radius;
     p.eigen_shifts = 1;
     if (!(near.disc.radius > 0.0))
-      p.eigen_warning = "tracked eigen-analysis: ARPACK did not converge the modes nearest the "
+      p.eigen_warning = "tracked eigen-analysis: the Krylov-Schur solve did not converge the modes nearest the "
                         "tracked one";
     return describe_modes(model_, p.linear, near.pairs);
   });
