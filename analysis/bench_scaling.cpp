@@ -8,7 +8,7 @@
 //    solver (eigen/band_eigen.hpp: every mode with Re in [-6, 6] 1/s up to
 //    20 Hz) and, up to N = 8 (and N = 16 once), the dense one;
 //  - a 12-speed critical-speed search (grid 60..115 m/s, step 5, no
-//    bisection: 12 evaluations), automatic solver (dense below 200 states,
+//    bisection: 12 evaluations), automatic solver (dense below 300 states,
 //    sparse from there), and the same forced dense up to N = 4;
 //  - 1 s simulated (the scene's integrator: ARKODE SDIRK, rtol 1e-3) from the
 //    steady state with the 1 mm disturbance on car 1, CPU against 1 s.

@@ -43,7 +43,8 @@ void add_solver(CLI::App* cmd, CommonArgs& a) {
   cmd->add_option("--solver", a.solver,
                   "eigen-solver: dense (all modes), sparse (every mode in the hunting band, "
                   "shift-invert on a sparse LU at several shifts), arpack (the 16 modes nearest "
-                  "one shift) or auto (dense below 200 states, sparse from there)")
+                  "one shift) or auto (dense below " +
+                      std::to_string(kSparseFromStates) + " states, sparse from there)")
       ->check(CLI::IsMember({"auto", "dense", "sparse", "arpack"}))
       ->capture_default_str();
   cmd->add_option("--hunting-band", a.hunting_band_hz,

@@ -15,13 +15,16 @@
 
 namespace railstab {
 
-// automatic: dense (all modes) below kSparseFromStates linear states, sparse
+// automatic: dense (all modes) below kSparseFromStates states, sparse
 // (every mode in the hunting band's box, eigen/band_eigen.hpp) from there on:
-// the crossover measured by analysis/bench_scaling (README, issue 11).
+// the crossover of a 12-speed critical-speed search with bisection on the
+// thesis train (CPU, stop 17: 3 cars, 246 states, dense 0.67 s / sparse
+// 0.91 s; 4 cars, 328 states, 1.40 / 1.46 s at a third of the memory;
+// 6 cars 4.45 / 2.79 s; README, issue 11).
 // arpack: the arpack_eigenvalues modes nearest one shift, dense LU (only
 // when asked: it decides nothing about the modes it did not compute).
 enum class EigenSolverKind { automatic, dense, arpack, sparse };
-inline constexpr int kSparseFromStates = 200;
+inline constexpr int kSparseFromStates = 300;
 std::string eigen_solver_name(EigenSolverKind kind);
 // The solver `kind` resolves to for an n-state linear model.
 EigenSolverKind resolved_solver(EigenSolverKind kind, int n_states);
