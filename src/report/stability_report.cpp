@@ -100,8 +100,18 @@ struct PlottedTrack {
   int id = -1;
   std::string name;
   double mean_frequency_hz = 0.0;
+  double min_damping_ratio = 0.0;  // over the speeds of the track
   bool hunting = false;
+  // In the legend, in colour; the others (a train's many modes) are drawn
+  // thin and grey under them, counted in one legend entry.
+  bool labelled = true;
+  int colour = 0;  // index into kTrackColours (and dash pattern) among the labelled
 };
+
+// A legend of more entries squeezes the plot to a strip (a 4-car train has
+// ~60 tracked modes below 20 Hz): the hunting mode and the least damped
+// others are named, up to this many.
+constexpr size_t kMaxLabelledTracks = 24;
 
 // Line colours, one per plotted track in legend order (ascending mean
 // frequency); past the tenth the colours repeat with another dash pattern.
@@ -139,13 +149,29 @@ std::vector<PlottedTrack> write_track_blocks(std::ostream& out, const CriticalSp
     PlottedTrack t;
     t.id = track.first;
     t.name = names[t.id];
-    for (const auto& p : track.second) t.mean_frequency_hz += p[2] / double(track.second.size());
+    t.min_damping_ratio = INFINITY;
+    for (const auto& p : track.second) {
+      t.mean_frequency_hz += p[2] / double(track.second.size());
+      t.min_damping_ratio = std::min(t.min_damping_ratio, p[3]);
+    }
     t.hunting = !hunting_name.empty() && t.name == hunting_name;
     plotted.push_back(t);
   }
   std::stable_sort(plotted.begin(), plotted.end(), [](const PlottedTrack& a, const PlottedTrack& b) {
     return a.mean_frequency_hz < b.mean_frequency_hz;
   });
+  if (plotted.size() > kMaxLabelledTracks) {
+    std::vector<size_t> rank(plotted.size());
+    for (size_t k = 0; k < rank.size(); ++k) rank[k] = k;
+    std::stable_sort(rank.begin(), rank.end(), [&](size_t a, size_t b) {
+      if (plotted[a].hunting != plotted[b].hunting) return plotted[a].hunting;
+      return plotted[a].min_damping_ratio < plotted[b].min_damping_ratio;
+    });
+    for (size_t k = kMaxLabelledTracks; k < rank.size(); ++k) plotted[rank[k]].labelled = false;
+  }
+  int colour = 0;
+  for (PlottedTrack& t : plotted)
+    if (t.labelled) t.colour = colour++;
   out << std::setprecision(10) << "# speed_m_s real_per_s frequency_hz damping_ratio, one block "
                                   "per tracked mode\n";
   for (const PlottedTrack& t : plotted) {
@@ -172,12 +198,32 @@ std::string track_plot_clauses(const std::vector<PlottedTrack>& tracks, const st
                                const std::string& using_columns, const std::string& style) {
   if (tracks.empty()) return "NaN notitle";
   std::ostringstream p;
+  bool first = true;
+  auto separate = [&] {
+    if (!first) p << ", \\\n     ";
+    first = false;
+  };
+  // The unnamed first, so the named ones are drawn over them.
+  size_t unnamed = 0;
+  for (size_t k = 0; k < tracks.size(); ++k) {
+    if (tracks[k].labelled) continue;
+    separate();
+    p << gnuplot_path(file) << " index " << k << " using " << using_columns << " with " << style
+      << " lc rgb '#c8c8c8' lw 1 notitle";
+    ++unnamed;
+  }
+  if (unnamed > 0) {
+    separate();
+    p << "NaN with lines lc rgb '#c8c8c8' lw 1 title "
+      << gnuplot_text(std::to_string(unnamed) + " better-damped modes, unnamed");
+  }
   for (size_t k = 0; k < tracks.size(); ++k) {
     const PlottedTrack& t = tracks[k];
-    if (k) p << ", \\\n     ";
+    if (!t.labelled) continue;
+    separate();
     p << gnuplot_path(file) << " index " << k << " using " << using_columns << " with " << style
-      << " lc rgb '" << kTrackColours[k % 10] << "' dt " << 1 + int(k / 10) % 4 << " lw "
-      << (t.hunting ? 4.0 : 1.5) << " title "
+      << " lc rgb '" << kTrackColours[t.colour % 10] << "' dt " << 1 + (t.colour / 10) % 4
+      << " lw " << (t.hunting ? 4.0 : 1.5) << " title "
       << gnuplot_text(t.hunting ? t.name + "  [critical mode]" : t.name);
   }
   return p.str();

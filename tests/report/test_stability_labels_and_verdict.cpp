@@ -18,6 +18,8 @@
 #include <map>
 #include <regex>
 #include <set>
+#include <sstream>
+#include <algorithm>
 #include <unistd.h>
 
 using namespace railstab;
@@ -167,4 +169,75 @@ TEST(StabilityPlots, EveryCurveNamedOneColourPerModeCriticalMarkedPngAndSvg) {
   EXPECT_NE(w.script.find("set title '" + s.model.name + ": "), std::string::npos);
   // The legend is drawn: every name is in the SVG's text.
   for (const std::string& n : names) EXPECT_NE(w.svg_damping.find(n), std::string::npos) << n;
+}
+
+// A train has many more tracked modes than a legend can hold (the 4-car
+// train: ~60 below 20 Hz): the critical mode and the least damped others
+// are named, at most 24 per plot, in colour; the rest are drawn thin grey
+// without a name and counted in one legend entry, so the plot keeps its width.
+TEST(StabilityPlots, ATrainNamesTheCriticalAndTheLeastDampedModesOnly) {
+  if (find_gnuplot().empty()) GTEST_SKIP() << "gnuplot not installed";
+  const PreparedScene s =
+      prepare_scene(std::string(RAILSTAB_CASES_DIR) + "/thesis_train_4.toml", {});
+  CriticalSpeedOptions opt;
+  opt.from_m_per_s = 105.0;
+  opt.to_m_per_s = 115.0;
+  opt.grid_step_m_per_s = 5.0;
+  opt.tolerance_m_per_s = 0.5;
+  const CriticalSpeedResult r = find_critical_speed(s.model, s.equilibrium.state, s.speed_m_per_s, opt);
+  ASSERT_TRUE(r.critical_speed_found);
+  const Written w = write_all(s.model, r, "train", true);
+  const std::regex block("# track [0-9]+: '([^']*)'");
+  const size_t tracks = size_t(std::distance(
+      std::sregex_iterator(w.tracks.begin(), w.tracks.end(), block), std::sregex_iterator()));
+  ASSERT_GT(tracks, 24u);
+  const std::regex named("index [0-9]+ using [^\\n]* title '([^']*)'");
+  const std::regex unnamed("index [0-9]+ using [^\\n]* lc rgb '#c8c8c8' lw 1 notitle");
+  const auto count = [&](const std::regex& re) {
+    return size_t(std::distance(std::sregex_iterator(w.script.begin(), w.script.end(), re),
+                                std::sregex_iterator()));
+  };
+  EXPECT_EQ(count(named), 3 * 24u);  // three plots
+  EXPECT_EQ(count(unnamed), 3 * (tracks - 24));
+  EXPECT_NE(w.script.find("title '" + std::to_string(tracks - 24) + " better-damped modes, unnamed'"),
+            std::string::npos);
+  // The critical mode is among the named, in each plot.
+  size_t critical = 0;
+  for (size_t at = w.script.find("[critical mode]"); at != std::string::npos;
+       at = w.script.find("[critical mode]", at + 1))
+    ++critical;
+  EXPECT_EQ(critical, 3u);
+  // Every named mode's minimum damping ratio over the speeds is at most
+  // every unnamed one's but the critical mode's own.
+  std::map<std::string, double> min_damping;
+  std::istringstream in(w.tracks);
+  std::string line, current;
+  while (std::getline(in, line)) {
+    std::smatch m;
+    if (std::regex_match(line, m, std::regex("# track [0-9]+: '([^']*)'"))) {
+      current = m[1];
+      min_damping[current] = 1e9;
+    } else if (!line.empty() && line[0] != '#' && !current.empty()) {
+      std::istringstream cols(line);
+      double v, re, f, zeta;
+      cols >> v >> re >> f >> zeta;
+      min_damping[current] = std::min(min_damping[current], zeta);
+    }
+  }
+  std::set<std::string> named_names;
+  for (auto it = std::sregex_iterator(w.script.begin(), w.script.end(), named);
+       it != std::sregex_iterator(); ++it) {
+    std::string n = (*it)[1];
+    const size_t tag = n.find("  [critical mode]");
+    if (tag != std::string::npos) n = n.substr(0, tag);
+    named_names.insert(n);
+  }
+  double worst_named = -1e9, best_unnamed = 1e9;
+  for (const auto& [name, zeta] : min_damping) {
+    if (named_names.count(name))
+      worst_named = std::max(worst_named, zeta);
+    else
+      best_unnamed = std::min(best_unnamed, zeta);
+  }
+  EXPECT_LE(worst_named, best_unnamed);
 }
