@@ -274,7 +274,14 @@ std::vector<std::string> plot_stability(OutputSet& outputs, const std::string& s
          << svg_terminal << "set output " << gnuplot_text(stem + kinds[k] + ".svg") << "\nreplot\n"
          << "unset output\n" << png_terminal;
     };
-    gp << "set title " << titled("root locus of the modes below " + band.str() + " Hz, real part >= -20 1/s")
+    // The sparse solver computes only the hunting band's box (Re near 0,
+    // eigen/band_eigen.hpp): the plot says so rather than look complete.
+    const bool sparse = std::any_of(r.grid.begin(), r.grid.end(), [](const StabilityPoint& p) {
+      return p.solver_used == EigenSolverKind::sparse;
+    });
+    gp << "set title "
+       << titled(sparse ? "root locus below " + band.str() + " Hz, sparse solver: Re near 0 only"
+                        : "root locus of the modes below " + band.str() + " Hz, real part >= -20 1/s")
        << "\nset xlabel 'real part of the eigenvalue [1/s]'\nset ylabel 'frequency [Hz]'\n"
        << "set arrow 2 from 0, graph 0 to 0, graph 1 nohead lc 'black'\n"
        << "set yrange [0:" << max_hz << "]\nset xrange [-20:*]\n";

@@ -207,6 +207,9 @@ TEST(StabilityPlots, ATrainNamesTheCriticalAndTheLeastDampedModesOnly) {
        at = w.script.find("[critical mode]", at + 1))
     ++critical;
   EXPECT_EQ(critical, 3u);
+  // The root locus says the sparse solver computed only its box.
+  EXPECT_NE(w.script.find("sparse solver: Re near 0 only"),
+            std::string::npos);
   // Every named mode's minimum damping ratio over the speeds is at most
   // every unnamed one's but the critical mode's own.
   std::map<std::string, double> min_damping;
