@@ -11,7 +11,7 @@
 // ||A||_F ~ 5e6 for the thesis vehicle, ~9e3 balanced. The eigenvalues of
 // the slow, lightly damped modes that decide stability are then resolved
 // against a norm 500x smaller, and the QR iteration converges in fewer
-// sweeps (thesis vehicle: 0.91x the time of EigenSolver on A, measured by
+// sweeps (thesis vehicle: 0.93-0.98x the time of EigenSolver on A, balancing included; the coach 1.03x, measured by
 // analysis/bench_jacobian).
 //
 // Powers of two make the similarity exact in floating point: B has exactly
