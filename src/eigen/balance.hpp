@@ -10,8 +10,8 @@
 // of stiffness/mass (1e7 N/m over 1e3 kg: 1e4 1/s^2, contact rows more):
 // ||A||_F ~ 5e6 for the thesis vehicle, ~9e3 balanced. The eigenvalues of
 // the slow, lightly damped modes that decide stability are then resolved
-// against a norm 500x smaller, and the QR iteration converges in fewer
-// sweeps (thesis vehicle: 0.93-0.98x the time of EigenSolver on A, balancing included; the coach 1.03x, measured by
+// against a norm 500x smaller, at about the same cost
+// (thesis vehicle: 0.93-0.98x the time of EigenSolver on A, balancing included; the coach 1.03x, measured by
 // analysis/bench_jacobian).
 //
 // Powers of two make the similarity exact in floating point: B has exactly
