@@ -127,6 +127,25 @@ struct KrylovSchurResult {
   int restarts = 0;
   int operator_applications = 0;
   bool converged = false;
+  // Stopped early on a converged prefix (PrefixStop): `values` are the
+  // leading Ritz values, all converged, ending at a gap.
+  bool prefix = false;
+};
+
+// An earlier stop with fewer than the k wanted. Sorted by |theta|
+// descending, the leading Ritz pairs that have all converged (a prefix)
+// rest on the same Krylov assumption as the full k (no unconverged Ritz
+// value ahead of them, none of OP's larger eigenvalues unseen), so they
+// are the nearest eigenvalues as well. After `after_restarts` restarts the
+// solve returns the longest such prefix whose smallest |theta| is at most
+// `max_theta_magnitude` (a disc wide enough for the caller) and that ends at
+// a gap, |theta_j| > (1 + min_gap) |theta_{j+1}|: the disc's rim then does not
+// cut a cluster of nearly equal modes whose unconverged members lie just
+// outside it (the rim margin, 1e-6, is far inside the gap).
+struct PrefixStop {
+  int after_restarts = -1;  // < 0: never (all k or nothing)
+  double max_theta_magnitude = 0.0;
+  double min_gap = 1e-3;
 };
 
 // Swaps the adjacent diagonal entries i, i + 1 of the upper triangular T by
@@ -170,7 +189,7 @@ Eigen::VectorXcd triangular_eigenvector(const Eigen::MatrixXcd& T, Eigen::Index 
 
 template <class Op>
 KrylovSchurResult krylov_schur_largest(Op&& op, Eigen::Index n, int k, int m, double tolerance,
-                                       int max_restarts) {
+                                       int max_restarts, const PrefixStop& prefix_stop = {}) {
   KrylovSchurResult out;
   Eigen::MatrixXcd V(n, m + 1);
   Eigen::MatrixXcd H = Eigen::MatrixXcd::Zero(m + 1, m);
@@ -259,6 +278,31 @@ KrylovSchurResult krylov_schur_largest(Op&& op, Eigen::Index n, int k, int m, do
       converged = std::abs(projected) / Y.back().norm() <= tolerance * std::abs(T(i, i));
       if (!converged) break;
     }
+    // The converged prefix: Y holds its pairs and, when not all converged,
+    // the first unconverged one last.
+    int prefix = 0;
+    if (!converged && prefix_stop.after_restarts >= 0 && restart >= prefix_stop.after_restarts) {
+      for (int j = int(Y.size()) - 1; j >= 1; --j) {
+        const double inner = std::abs(T(order[size_t(j - 1)], order[size_t(j - 1)]));
+        const double outer = std::abs(T(order[size_t(j)], order[size_t(j)]));
+        if (inner <= prefix_stop.max_theta_magnitude && inner > (1.0 + prefix_stop.min_gap) * outer) {
+          prefix = j;
+          break;
+        }
+      }
+    }
+    if (prefix > 0) {
+      out.prefix = true;
+      out.restarts = restart;
+      out.values.resize(size_t(prefix));
+      out.vectors.resize(n, prefix);
+      for (int c = 0; c < prefix; ++c) {
+        const Eigen::Index i = order[size_t(c)];
+        out.values[size_t(c)] = T(i, i);
+        out.vectors.col(c) = (V.leftCols(m) * (Q.leftCols(i + 1) * Y[size_t(c)])).normalized();
+      }
+      return out;
+    }
     if (converged || restart >= max_restarts) {
       // All wanted pairs; out of restarts, those of them that converged
       // (as ARPACK: then nothing is proven about the rest).
@@ -293,7 +337,7 @@ KrylovSchurResult krylov_schur_largest(Op&& op, Eigen::Index n, int k, int m, do
 // be the nearest). Pairs nearest first.
 NearestEigenpairs nearest_eigenpairs(const Eigen::SparseMatrix<double>& A, double norm_A,
                                      ShiftedSparseLU& lu, Complex sigma, int k,
-                                     double tolerance) {
+                                     double tolerance, const PrefixStop& prefix_stop = {}) {
   NearestEigenpairs out;
   ShiftDisc& work = out.disc;
   work.shift = sigma;
@@ -304,12 +348,13 @@ NearestEigenpairs nearest_eigenpairs(const Eigen::SparseMatrix<double>& A, doubl
   // a wider basis separates in fewer restarts.
   const int ncv = int(std::min<Eigen::Index>(n, std::max(3 * nev + 1, 20)));
   KrylovSchurResult ks = krylov_schur_largest(
-      [&lu](const Complex* x, Complex* y) { lu.solve(x, y); }, n, nev, ncv, tolerance, 3000);
+      [&lu](const Complex* x, Complex* y) { lu.solve(x, y); }, n, nev, ncv, tolerance, 3000, prefix_stop);
   work.restarts = ks.restarts;
   work.operator_applications = ks.operator_applications;
+  work.prefix = ks.prefix;
   work.eigenvalues = int(ks.values.size());
   const int converged = int(ks.values.size());  // all returned have converged
-  const bool all_converged = ks.converged;
+  const bool all_converged = ks.converged || ks.prefix;  // a prefix is proven as all k
   std::vector<EigenPair>& pairs = out.pairs;
   for (int j = 0; j < converged; ++j) {
     const Eigen::VectorXcd z = ks.vectors.col(j);
@@ -351,7 +396,17 @@ BandEigenResult eigen_sparse_band(const Eigen::SparseMatrix<double>& A,
   while (covered_to < top && int(result.discs.size()) < o.max_shifts) {
     const Complex sigma = factorise_near(
         lu, Complex(centre, std::min(covered_to + expected_half, top)), 1e-7 * top);
-    NearestEigenpairs found = nearest_eigenpairs(A, norm_A, lu, sigma, k, o.tolerance);
+    // A converged prefix may end the solve early when its disc already
+    // spans the box's width with a usable height (PrefixStop).
+    PrefixStop prefix_stop;
+    if (o.prefix_stop_after_restarts >= 0) {
+      const double wanted_half = std::max(0.1 * half_width, o.prefix_stop_height_fraction * expected_half);
+      const double wanted_radius = std::hypot(half_width, wanted_half) / (1.0 - kRimMargin);
+      prefix_stop.after_restarts = o.prefix_stop_after_restarts;
+      prefix_stop.max_theta_magnitude = 1.0 / wanted_radius;
+      prefix_stop.min_gap = o.prefix_stop_min_gap;
+    }
+    NearestEigenpairs found = nearest_eigenpairs(A, norm_A, lu, sigma, k, o.tolerance, prefix_stop);
     const double radius = found.disc.radius;
     // Keep what lies in this disc and in no earlier one.
     for (EigenPair& p : found.pairs) {
