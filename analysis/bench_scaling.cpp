@@ -223,38 +223,80 @@ int band_run(const std::string& cases_dir, int cars) {
               "%zu solves, %zu modes, %d restarts, %d OP applications, covered %d\n",
               cars, lin.states(), cpu[1], cpu[0], cpu[1], cpu[2], band.discs.size(),
               band.pairs.size(), restarts, ops, int(band.covered));
+  // Every dense eigenvalue in the box must be in the band result (1e-8
+  // relative), and every band value must be a dense eigenvalue.
   const std::vector<EigenPair> dense = eigen_dense(Eigen::MatrixXd(lin.A_sparse));
   const double top = 2.0 * std::numbers::pi * o.max_frequency_hz;
-  int in_box = 0, missing = 0, extra = 0;
-  std::vector<bool> used(band.pairs.size(), false);
-  for (const EigenPair& p : dense) {
-    const std::complex<double> l = p.value;
-    if (!(l.real() >= o.min_real_part_per_s && l.real() <= o.max_real_part_per_s &&
-          l.imag() >= -1e-12 * std::max(1.0, std::abs(l)) && l.imag() <= top))
-      continue;
-    ++in_box;
-    int best = -1;
-    double best_d = 1e300;
-    for (size_t j = 0; j < band.pairs.size(); ++j)
-      if (!used[j] && std::abs(band.pairs[j].value - l) < best_d) {
-        best_d = std::abs(band.pairs[j].value - l);
-        best = int(j);
+  const auto check_against_dense = [&](const BandEigenResult& result, const char* label) {
+    int in_box = 0, missing = 0, extra = 0;
+    std::vector<bool> used(result.pairs.size(), false);
+    for (const EigenPair& p : dense) {
+      const std::complex<double> l = p.value;
+      if (!(l.real() >= o.min_real_part_per_s && l.real() <= o.max_real_part_per_s &&
+            l.imag() >= -1e-12 * std::max(1.0, std::abs(l)) && l.imag() <= top))
+        continue;
+      ++in_box;
+      int best = -1;
+      double best_d = 1e300;
+      for (size_t j = 0; j < result.pairs.size(); ++j)
+        if (!used[j] && std::abs(result.pairs[j].value - l) < best_d) {
+          best_d = std::abs(result.pairs[j].value - l);
+          best = int(j);
+        }
+      if (best < 0 || best_d > 1e-8 * std::max(1.0, std::abs(l))) {
+        ++missing;
+        std::printf("  missing %+.9f%+.9fi\n", l.real(), l.imag());
+      } else {
+        used[size_t(best)] = true;
       }
-    if (best < 0 || best_d > 1e-8 * std::max(1.0, std::abs(l))) {
-      ++missing;
-      std::printf("  missing %+.9f%+.9fi\n", l.real(), l.imag());
-    } else {
-      used[size_t(best)] = true;
     }
+    for (const EigenPair& p : result.pairs) {
+      double best_d = 1e300;
+      for (const EigenPair& q : dense) best_d = std::min(best_d, std::abs(p.value - q.value));
+      if (best_d > 1e-8 * std::max(1.0, std::abs(p.value))) ++extra;
+    }
+    std::printf("dense: %d eigenvalues in the box, %d missing from the %s band result, %d band values "
+                "not dense eigenvalues\n",
+                in_box, missing, label, extra);
+  };
+  check_against_dense(band, "unplanned");
+  // As a sweep solves it: planned from the discs of the solve at V - 5 m/s
+  // (the 12-speed search's grid step).
+  {
+    const double V_before = V - 5.0;
+    const StabilityPoint at_before = sweep.at(V_before);
+    const LinearModel lin_before = linearize(s.model, V_before, at_before.equilibrium.state, lo);
+    const std::vector<ShiftDisc> plan = eigen_sparse_band(lin_before.A_sparse, o).discs;
+    std::vector<double> planned_cpu;
+    BandEigenResult planned;
+    for (int run = 0; run < 3; ++run) {
+      const double t0 = cpu_seconds();
+      planned = eigen_sparse_band(lin.A_sparse, o, plan);
+      planned_cpu.push_back(cpu_seconds() - t0);
+    }
+    std::sort(planned_cpu.begin(), planned_cpu.end());
+    int planned_ops = 0, planned_restarts = 0;
+    for (const ShiftDisc& d : planned.discs) {
+      planned_ops += d.operator_applications;
+      planned_restarts += d.restarts;
+      std::printf("  planned shift %+.3f%+.3fi radius %.3f k %d: %d restarts, %d OP applications\n",
+                  d.shift.real(), d.shift.imag(), d.radius, d.eigenvalues, d.restarts,
+                  d.operator_applications);
+    }
+    int same = 0;
+    for (const EigenPair& p : planned.pairs)
+      for (const EigenPair& q : band.pairs)
+        if (std::abs(p.value - q.value) <= 1e-8 * std::abs(q.value)) {
+          ++same;
+          break;
+        }
+    std::printf("planned from the solve at %.0f m/s (%zu discs): band solve %.3f s CPU (median of 3), "
+                "%zu solves, %zu modes (%d equal to the unplanned ones to 1e-8), %d restarts, %d OP "
+                "applications, covered %d; planned / unplanned CPU %.2f\n",
+                V_before, plan.size(), planned_cpu[1], planned.discs.size(), planned.pairs.size(), same,
+                planned_restarts, planned_ops, int(planned.covered), planned_cpu[1] / cpu[1]);
+    check_against_dense(planned, "planned");
   }
-  for (const EigenPair& p : band.pairs) {
-    double best_d = 1e300;
-    for (const EigenPair& q : dense) best_d = std::min(best_d, std::abs(p.value - q.value));
-    if (best_d > 1e-8 * std::max(1.0, std::abs(p.value))) ++extra;
-  }
-  std::printf("dense: %d eigenvalues in the box, %d missing from the band result, %d band values "
-              "not dense eigenvalues\n",
-              in_box, missing, extra);
   return 0;
 }
 

@@ -121,6 +121,31 @@ Complex factorise_near(ShiftedSparseLU& lu, Complex sigma, double nudge) {
 // the orthogonalisation runs in Eigen's vectorised GEMV instead of the
 // reference BLAS zgemv that ARPACK calls (16-car train, 1248 states: one band
 // solve 1.4 s CPU instead of 2.4 s; no Fortran SAVE state, so no lock).
+// The convergence tolerance of a Ritz value theta of OP = (A - sigma I)^-1,
+// relative to |theta|: `inside` where its eigenvalue lambda = sigma + 1 /
+// theta lies in the box the caller reports (or near it: 1e-4 |lambda -
+// sigma| around it), `outside` elsewhere. Eigenvalues outside the box only
+// bound a disc's radius (to the rim margin, 1e-6 relative) and are drawn in
+// the root locus; the train's out-of-box modes come in clusters of nearly
+// equal modes (one per car, relative spread 1e-10..1e-7) that take many
+// restarts to separate to 1e-12.
+struct RitzTolerance {
+  double inside = 1e-12, outside = 1e-12;
+  bool box = false;  // false: `inside` everywhere
+  Complex sigma{0.0, 0.0};
+  double min_real = 0.0, max_real = 0.0, max_imag = 0.0;
+
+  double of(Complex theta) const {
+    if (!box || outside <= inside) return inside;
+    const Complex offset = 1.0 / theta;
+    const Complex lambda = sigma + offset;
+    const double near = 1e-4 * std::abs(offset);
+    const bool in_box = lambda.real() >= min_real - near && lambda.real() <= max_real + near &&
+                        std::abs(lambda.imag()) <= max_imag + near;
+    return in_box ? inside : outside;
+  }
+};
+
 struct KrylovSchurResult {
   std::vector<Complex> values;  // theta, largest magnitude first
   Eigen::MatrixXcd vectors;     // their Ritz vectors (columns, unit norm)
@@ -188,7 +213,7 @@ Eigen::VectorXcd triangular_eigenvector(const Eigen::MatrixXcd& T, Eigen::Index 
 }
 
 template <class Op>
-KrylovSchurResult krylov_schur_largest(Op&& op, Eigen::Index n, int k, int m, double tolerance,
+KrylovSchurResult krylov_schur_largest(Op&& op, Eigen::Index n, int k, int m, const RitzTolerance& tolerance,
                                        int max_restarts, const PrefixStop& prefix_stop = {}) {
   KrylovSchurResult out;
   Eigen::MatrixXcd V(n, m + 1);
@@ -275,7 +300,7 @@ KrylovSchurResult krylov_schur_largest(Op&& op, Eigen::Index n, int k, int m, do
     for (Eigen::Index i : order) {
       Y.push_back(triangular_eigenvector(T, i));
       const Complex projected = bQ.head(i + 1) * Y.back();
-      converged = std::abs(projected) / Y.back().norm() <= tolerance * std::abs(T(i, i));
+      converged = std::abs(projected) / Y.back().norm() <= tolerance.of(T(i, i)) * std::abs(T(i, i));
       if (!converged) break;
     }
     // The converged prefix: Y holds its pairs and, when not all converged,
@@ -313,7 +338,7 @@ KrylovSchurResult krylov_schur_largest(Op&& op, Eigen::Index n, int k, int m, do
         const Eigen::Index i = order[c];
         if (c >= Y.size()) Y.push_back(triangular_eigenvector(T, i));
         const Complex projected = bQ.head(i + 1) * Y[c];
-        if (!(std::abs(projected) / Y[c].norm() <= tolerance * std::abs(T(i, i)))) continue;
+        if (!(std::abs(projected) / Y[c].norm() <= tolerance.of(T(i, i)) * std::abs(T(i, i)))) continue;
         out.values.push_back(T(i, i));
         x.push_back((V.leftCols(m) * (Q.leftCols(i + 1) * Y[c])).normalized());
       }
@@ -337,7 +362,7 @@ KrylovSchurResult krylov_schur_largest(Op&& op, Eigen::Index n, int k, int m, do
 // be the nearest). Pairs nearest first.
 NearestEigenpairs nearest_eigenpairs(const Eigen::SparseMatrix<double>& A, double norm_A,
                                      ShiftedSparseLU& lu, Complex sigma, int k,
-                                     double tolerance, const PrefixStop& prefix_stop = {}) {
+                                     const RitzTolerance& tolerance, const PrefixStop& prefix_stop = {}) {
   NearestEigenpairs out;
   ShiftDisc& work = out.disc;
   work.shift = sigma;
@@ -378,10 +403,54 @@ NearestEigenpairs nearest_eigenpairs(const Eigen::SparseMatrix<double>& A, doubl
   return out;
 }
 
+// A disc of an earlier solve as a guess for this one: where its shift was,
+// how far along the band it reached (half-height h in the box) and with
+// how many eigenvalues.
+struct PlannedShift {
+  double imag = 0.0, half_height = 0.0;
+  int k = 0;
+  bool used = false;
+};
+
+// The plan's discs that spanned the box's width (a disc too narrow there
+// was asked again at the same shift with a larger k: only that one counts).
+std::vector<PlannedShift> planned_shifts(const std::vector<ShiftDisc>& plan, double half_width) {
+  std::vector<PlannedShift> out;
+  for (const ShiftDisc& d : plan) {
+    if (!(d.radius > half_width) || d.eigenvalues < 1 || !std::isfinite(d.shift.imag())) continue;
+    const double h = std::sqrt(d.radius * d.radius - half_width * half_width);
+    if (h >= 0.1 * half_width) out.push_back({d.shift.imag(), h, d.eigenvalues, false});
+  }
+  return out;
+}
+
+// The next planned shift for a band covered up to `covered_to`: of the
+// unused ones that reach past it, the one reaching farthest among those
+// whose planned disc still joins the covered part; failing that the lowest,
+// lowered so that its planned disc would join with a 10 % overlap. Each is
+// used once (a guess that left a gap is not repeated). nullptr: none left.
+PlannedShift* next_planned(std::vector<PlannedShift>& plan, double covered_to, double& imag) {
+  PlannedShift* joining = nullptr;
+  PlannedShift* lowest = nullptr;
+  for (PlannedShift& s : plan) {
+    if (s.used || !(s.imag + s.half_height > covered_to)) continue;
+    if (s.imag - s.half_height <= covered_to) {
+      if (!joining || s.imag + s.half_height > joining->imag + joining->half_height) joining = &s;
+    } else if (!lowest || s.imag < lowest->imag) {
+      lowest = &s;
+    }
+  }
+  PlannedShift* chosen = joining ? joining : lowest;
+  if (!chosen) return nullptr;
+  chosen->used = true;
+  imag = joining ? chosen->imag : std::min(chosen->imag, covered_to + 0.9 * chosen->half_height);
+  return chosen;
+}
+
 }  // namespace
 
 BandEigenResult eigen_sparse_band(const Eigen::SparseMatrix<double>& A,
-                                  const BandCoverOptions& o) {
+                                  const BandCoverOptions& o, const std::vector<ShiftDisc>& plan) {
   validate(A, o);
   const double centre = 0.5 * (o.min_real_part_per_s + o.max_real_part_per_s);
   const double half_width = 0.5 * (o.max_real_part_per_s - o.min_real_part_per_s);
@@ -390,12 +459,24 @@ BandEigenResult eigen_sparse_band(const Eigen::SparseMatrix<double>& A,
   const double norm_A = std::max(A.norm(), std::numeric_limits<double>::min());
   ShiftedSparseLU lu(A);
   BandEigenResult result;
+  std::vector<PlannedShift> planned = planned_shifts(plan, half_width);
   double covered_to = 0.0;            // [0, covered_to] of the band's height is covered
   double expected_half = half_width;  // guess of the next disc's h
   int k = o.eigenvalues_per_shift;
+  Complex requested{centre, 0.0};
+  bool again = false;  // the last disc was too narrow: the same shift, a larger k
   while (covered_to < top && int(result.discs.size()) < o.max_shifts) {
-    const Complex sigma = factorise_near(
-        lu, Complex(centre, std::min(covered_to + expected_half, top)), 1e-7 * top);
+    if (!again) {
+      requested = Complex(centre, std::min(covered_to + expected_half, top));
+      double imag = 0.0;
+      if (const PlannedShift* s = next_planned(planned, covered_to, imag)) {
+        requested = Complex(centre, std::min(imag, top));
+        k = std::min(n - 2, s->k);
+        expected_half = s->half_height;
+      }
+    }
+    again = false;
+    const Complex sigma = factorise_near(lu, requested, 1e-7 * top);
     // A converged prefix may end the solve early when its disc already
     // spans the box's width with a usable height (PrefixStop).
     PrefixStop prefix_stop;
@@ -406,7 +487,15 @@ BandEigenResult eigen_sparse_band(const Eigen::SparseMatrix<double>& A,
       prefix_stop.max_theta_magnitude = 1.0 / wanted_radius;
       prefix_stop.min_gap = o.prefix_stop_min_gap;
     }
-    NearestEigenpairs found = nearest_eigenpairs(A, norm_A, lu, sigma, k, o.tolerance, prefix_stop);
+    RitzTolerance tolerance;
+    tolerance.inside = o.tolerance;
+    tolerance.outside = std::max(o.tolerance, o.outside_box_tolerance);
+    tolerance.box = true;
+    tolerance.sigma = sigma;
+    tolerance.min_real = o.min_real_part_per_s;
+    tolerance.max_real = o.max_real_part_per_s;
+    tolerance.max_imag = top;
+    NearestEigenpairs found = nearest_eigenpairs(A, norm_A, lu, sigma, k, tolerance, prefix_stop);
     const double radius = found.disc.radius;
     // Keep what lies in this disc and in no earlier one.
     for (EigenPair& p : found.pairs) {
@@ -422,6 +511,7 @@ BandEigenResult eigen_sparse_band(const Eigen::SparseMatrix<double>& A,
       // Too few eigenvalues to span the box's width here: ask for more.
       if (k >= n - 2) break;  // all there are: nothing more to find
       k = std::min(n - 2, 2 * k);
+      again = true;
       continue;
     }
     // Back towards the base request: the density of eigenvalues changes
@@ -452,7 +542,9 @@ NearestEigenpairs eigen_sparse_nearest(const Eigen::SparseMatrix<double>& A,
   const double norm_A = std::max(A.norm(), std::numeric_limits<double>::min());
   ShiftedSparseLU lu(A);
   const Complex sigma = factorise_near(lu, shift, 1e-7 * std::max(1.0, std::abs(shift)));
-  return nearest_eigenpairs(A, norm_A, lu, sigma, k, tolerance);
+  RitzTolerance uniform;
+  uniform.inside = tolerance;
+  return nearest_eigenpairs(A, norm_A, lu, sigma, k, uniform);
 }
 
 }  // namespace railstab

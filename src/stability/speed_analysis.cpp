@@ -86,7 +86,9 @@ StabilityPoint SpeedStability::at(double speed_m_per_s) {
       resolved_solver(options_.solver, model_.state_size()) == EigenSolverKind::sparse;
   return evaluate(speed_m_per_s, sparse, [&](StabilityPoint& p) {
     if (!sparse) return describe_modes(model_, p.linear, solve_eigen(p.linear.A, options_));
-    const BandEigenResult band = eigen_sparse_band(p.linear.A_sparse, band_cover_options(options_));
+    const BandEigenResult band =
+        eigen_sparse_band(p.linear.A_sparse, band_cover_options(options_), last_band_discs_);
+    last_band_discs_ = band.discs;
     p.eigen_shifts = int(band.discs.size());
     if (!band.covered) {
       std::ostringstream w;

@@ -3,6 +3,7 @@
 // track, curving in an arc: the same equilibrium solver), its exact
 // linearisation, the eigenvalues and the least stable non-neutral mode; the
 // critical (hunting) speed where that mode's real part crosses zero.
+#include "eigen/band_eigen.hpp"
 #include "equilibrium/equilibrium.hpp"
 #include "linear/linearization.hpp"
 #include "stability/loss_of_stability.hpp"
@@ -109,6 +110,9 @@ class SpeedStability {
   double last_speed_;
   // Coloured-Jacobian plans, made once for every speed.
   RhsJacobianPlan jacobian_plan_, equilibrium_plan_;
+  // The last covering sparse solve's discs: the next speed's shifts and k
+  // start from them (eigen_sparse_band's plan; coverage is still proven).
+  std::vector<ShiftDisc> last_band_discs_;
 };
 
 std::vector<EigenPair> solve_eigen(const Eigen::MatrixXd& A, const StabilityOptions& options);
