@@ -130,13 +130,12 @@ Complex factorise_near(ShiftedSparseLU& lu, Complex sigma, double nudge) {
 // equal modes (one per car, relative spread 1e-10..1e-7) that take many
 // restarts to separate to 1e-12.
 struct RitzTolerance {
-  double inside = 1e-12, outside = 1e-12;
-  bool box = false;  // false: `inside` everywhere
+  double inside = 1e-12, outside = 1e-12;  // outside <= inside: `inside` everywhere
   Complex sigma{0.0, 0.0};
   double min_real = 0.0, max_real = 0.0, max_imag = 0.0;
 
   double of(Complex theta) const {
-    if (!box || outside <= inside) return inside;
+    if (outside <= inside) return inside;
     const Complex offset = 1.0 / theta;
     const Complex lambda = sigma + offset;
     const double near = 1e-4 * std::abs(offset);
@@ -489,8 +488,7 @@ BandEigenResult eigen_sparse_band(const Eigen::SparseMatrix<double>& A,
     }
     RitzTolerance tolerance;
     tolerance.inside = o.tolerance;
-    tolerance.outside = std::max(o.tolerance, o.outside_box_tolerance);
-    tolerance.box = true;
+    tolerance.outside = o.outside_box_tolerance;
     tolerance.sigma = sigma;
     tolerance.min_real = o.min_real_part_per_s;
     tolerance.max_real = o.max_real_part_per_s;
@@ -543,7 +541,7 @@ NearestEigenpairs eigen_sparse_nearest(const Eigen::SparseMatrix<double>& A,
   ShiftedSparseLU lu(A);
   const Complex sigma = factorise_near(lu, shift, 1e-7 * std::max(1.0, std::abs(shift)));
   RitzTolerance uniform;
-  uniform.inside = tolerance;
+  uniform.inside = uniform.outside = tolerance;
   return nearest_eigenpairs(A, norm_A, lu, sigma, k, uniform);
 }
 
