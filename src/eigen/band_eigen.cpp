@@ -425,9 +425,11 @@ std::vector<PlannedShift> planned_shifts(const std::vector<ShiftDisc>& plan, dou
 
 // The next planned shift for a band covered up to `covered_to`: of the
 // unused ones that reach past it, the one reaching farthest among those
-// whose planned disc still joins the covered part; failing that the lowest,
-// lowered so that its planned disc would join with a 10 % overlap. Each is
-// used once (a guess that left a gap is not repeated). nullptr: none left.
+// whose planned disc still joins the covered part; failing that the lowest.
+// Either is lowered where needed so that its planned disc overlaps the
+// covered part by 10 % of its half-height (a disc shrinks a little from one
+// speed to the next; one that just touched would leave a gap). Each is used
+// once (a guess that left a gap is not repeated). nullptr: none left.
 PlannedShift* next_planned(std::vector<PlannedShift>& plan, double covered_to, double& imag) {
   PlannedShift* joining = nullptr;
   PlannedShift* lowest = nullptr;
@@ -442,7 +444,7 @@ PlannedShift* next_planned(std::vector<PlannedShift>& plan, double covered_to, d
   PlannedShift* chosen = joining ? joining : lowest;
   if (!chosen) return nullptr;
   chosen->used = true;
-  imag = joining ? chosen->imag : std::min(chosen->imag, covered_to + 0.9 * chosen->half_height);
+  imag = std::min(chosen->imag, covered_to + 0.9 * chosen->half_height);
   return chosen;
 }
 
@@ -464,8 +466,19 @@ BandEigenResult eigen_sparse_band(const Eigen::SparseMatrix<double>& A,
   int k = o.eigenvalues_per_shift;
   Complex requested{centre, 0.0};
   bool again = false;  // the last disc was too narrow: the same shift, a larger k
+  // Spans of discs that reached the box's width but left a gap below them
+  // (their eigenvalues are kept): once the gap is filled, the band is
+  // covered to their top without solving there again.
+  std::vector<std::pair<double, double>> islands;
   while (covered_to < top && int(result.discs.size()) < o.max_shifts) {
-    if (!again) {
+    if (!again && !islands.empty()) {
+      // Fill the gap below the lowest island: a shift at its middle, whose
+      // disc joins both sides if it reaches half the gap's height.
+      double gap_top = top;
+      for (const auto& [lo, hi] : islands) gap_top = std::min(gap_top, lo);
+      const double half_gap = 0.5 * (gap_top - covered_to);
+      requested = Complex(centre, covered_to + std::min(expected_half, half_gap));
+    } else if (!again) {
       requested = Complex(centre, std::min(covered_to + expected_half, top));
       double imag = 0.0;
       if (const PlannedShift* s = next_planned(planned, covered_to, imag)) {
@@ -518,7 +531,19 @@ BandEigenResult eigen_sparse_band(const Eigen::SparseMatrix<double>& A,
     if (sigma.imag() - h <= covered_to) {
       covered_to = std::max(covered_to, sigma.imag() + h);
       expected_half = h;
+      // Islands the covered part now reaches join it.
+      for (bool joined = true; joined;) {
+        joined = false;
+        for (size_t i = 0; i < islands.size(); ++i)
+          if (islands[i].first <= covered_to) {
+            covered_to = std::max(covered_to, islands[i].second);
+            islands.erase(islands.begin() + std::ptrdiff_t(i));
+            joined = true;
+            break;
+          }
+      }
     } else {
+      islands.emplace_back(sigma.imag() - h, sigma.imag() + h);
       expected_half = 0.5 * h;  // a gap below: the next shift nearer the covered part
     }
   }

@@ -89,6 +89,7 @@ StabilityPoint SpeedStability::at(double speed_m_per_s) {
     const BandEigenResult band =
         eigen_sparse_band(p.linear.A_sparse, band_cover_options(options_), last_band_discs_);
     last_band_discs_ = band.discs;
+    p.band_discs = band.discs;
     p.eigen_shifts = int(band.discs.size());
     if (!band.covered) {
       std::ostringstream w;
@@ -101,6 +102,10 @@ StabilityPoint SpeedStability::at(double speed_m_per_s) {
     }
     return describe_modes(model_, p.linear, band.pairs);
   });
+}
+
+void SpeedStability::plan_band_solve_from(const StabilityPoint& near) {
+  if (!near.band_discs.empty()) last_band_discs_ = near.band_discs;
 }
 
 StabilityPoint SpeedStability::tracking(double speed_m_per_s, std::complex<double> shift,
@@ -228,6 +233,10 @@ SpeedBracket bisect_speed(const Model& model, const CriticalSpeedOptions& option
           hi.least_stable >= 0;
   const StabilityPoint grid_lo = lo, grid_hi = track ? hi : StabilityPoint{};
   SpeedStability refine(model, lo.equilibrium.state, lo.speed_m_per_s, options.stability);
+  // The midpoints' band solves start from the stable end's discs (the
+  // unstable end's where that one is a tracked point without discs).
+  refine.plan_band_solve_from(hi);
+  refine.plan_band_solve_from(lo);
   while (hi.speed_m_per_s - lo.speed_m_per_s > options.tolerance_m_per_s) {
     const double mid = 0.5 * (lo.speed_m_per_s + hi.speed_m_per_s);
     StabilityPoint p;
@@ -259,20 +268,21 @@ SpeedBracket bisect_speed(const Model& model, const CriticalSpeedOptions& option
   }
   if (track) {
     // The full covering solve at each tracked end of the final bracket.
-    auto covering = [&](const StabilityPoint& q) {
+    auto covering = [&](const StabilityPoint& q, const StabilityPoint& grid_end) {
       SpeedStability at_q(model, q.equilibrium.state, q.speed_m_per_s, options.stability);
+      at_q.plan_band_solve_from(grid_end);
       StabilityPoint f = at_q.at(q.speed_m_per_s);
       release_state_matrix(f);
       report(f);
       return f;
     };
     if (lo.tracked) {
-      lo = covering(lo);
+      lo = covering(lo, grid_lo);
       if (margin(lo) < 0.0)  // a mode outside the tracked disc crossed below
         return bisect_speed(model, options, grid_lo, std::move(lo), what, margin, r, report);
     }
     if (hi.tracked) {
-      hi = covering(hi);
+      hi = covering(hi, grid_hi);
       if (!(margin(hi) < 0.0))  // the tracked crossing was not the full decision's
         return bisect_speed(model, options, std::move(hi), grid_hi, what, margin, r, report);
     }
@@ -405,6 +415,8 @@ CriticalSpeedResult find_critical_speed(const Model& model, const Eigen::VectorX
       try {
         SpeedStability at_zero(model, r.at_critical.equilibrium.state,
                                r.at_critical.speed_m_per_s, options.stability);
+        at_zero.plan_band_solve_from(b.hi);
+        at_zero.plan_band_solve_from(b.lo);
         StabilityPoint p = at_zero.at(r.critical_speed_m_per_s);
         release_state_matrix(p);
         report(p);

@@ -74,6 +74,10 @@ struct StabilityPoint {
   // not, eigen_warning says so and the decision may have missed a mode).
   int eigen_shifts = 0;
   std::string eigen_warning;
+  // The covering solve's discs (sparse, not tracked; empty otherwise): a
+  // fresh SpeedStability near this speed starts its band solve from them
+  // (SpeedStability::plan_band_solve_from).
+  std::vector<ShiftDisc> band_discs;
   // A tracked point (a critical-speed bisection's midpoint, sparse solver):
   // only the modes nearest the mode that crosses, one shift-invert solve at
   // its eigenvalue at the bracket's unstable end (SpeedStability::tracking);
@@ -99,6 +103,11 @@ class SpeedStability {
   // a point with tracked = true. For following a known mode a short way in
   // speed; it proves nothing about the box outside its disc.
   StabilityPoint tracking(double speed_m_per_s, std::complex<double> shift, int modes);
+  // The first covering sparse solve starts from the discs of `near` (a point
+  // at a nearby speed, e.g. a bisection bracket's end) instead of placing
+  // its shifts from nothing: guesses only, coverage is still proven. No
+  // effect when `near` has no discs (dense, tracked).
+  void plan_band_solve_from(const StabilityPoint& near);
 
  private:
   template <class Eigen_>

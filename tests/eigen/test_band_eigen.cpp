@@ -225,7 +225,7 @@ TEST(BandEigen, APlanFromANearbyMatrixOrAWrongPlanFindsEveryEigenvalueInTheBox) 
   std::vector<std::complex<double>> reference;
   for (std::complex<double> l : known.eigenvalues) reference.push_back(1.02 * l);
   BandCoverOptions o;
-  o.eigenvalues_per_shift = 6;
+  o.eigenvalues_per_shift = 2;  // most shifts need k doubled: the plan's k fits
   const BandEigenResult before = eigen_sparse_band(known.matrix, o);
   const BandEigenResult unplanned = eigen_sparse_band(moved, o);
   const BandEigenResult planned = eigen_sparse_band(moved, o, before.discs);
@@ -250,6 +250,43 @@ TEST(BandEigen, APlanFromANearbyMatrixOrAWrongPlanFindsEveryEigenvalueInTheBox) 
     EXPECT_EQ(int(in.size()), expected);
   }
   EXPECT_LT(planned.discs.size(), unplanned.discs.size());
+}
+
+// A disc that spans the box's width but leaves a gap below it (here: the
+// first shift planned high in the band by a plan that overstates its
+// disc) is kept as an island: the gap is
+// filled from below and, once the covered part reaches the island, the
+// band counts as covered to its top. No second shift inside the island's
+// span, every eigenvalue in the box found once.
+TEST(BandEigen, ADiscAboveAGapIsKeptAndTheGapFilledBelowIt) {
+  const test::KnownSpectrum known = test::block_diagonal_known_spectrum(7, 300, 40);
+  BandCoverOptions o;
+  o.eigenvalues_per_shift = 6;
+  std::vector<ShiftDisc> high(1);
+  high[0].shift = {0.0, 60.0};
+  high[0].radius = 60.0;  // a planned half-height of ~60 1/s (it will be ~12): the
+  high[0].eigenvalues = 16; // shift is placed at 0.9 x 60 = 54 and leaves a gap below
+  const BandEigenResult r = eigen_sparse_band(known.matrix, o, high);
+  ASSERT_TRUE(r.covered);
+  ASSERT_GE(r.discs.size(), 2u);
+  const ShiftDisc& island = r.discs.front();
+  const double y0 = island.shift.imag();
+  const double half_width = 0.5 * (o.max_real_part_per_s - o.min_real_part_per_s);
+  EXPECT_NEAR(y0, 0.9 * std::sqrt(60.0 * 60.0 - half_width * half_width), 1e-6);
+  ASSERT_GT(island.radius, half_width);
+  const double h = std::sqrt(island.radius * island.radius - half_width * half_width);
+  ASSERT_GT(y0 - h, 1.0);  // it did leave a gap below
+  for (size_t i = 1; i < r.discs.size(); ++i) {
+    const double y = r.discs[i].shift.imag();
+    EXPECT_FALSE(y > y0 - h && y < y0 + h) << "shift " << y << " inside the island";
+  }
+  std::vector<EigenPair> in;
+  for (const EigenPair& p : r.pairs)
+    if (in_box(p.value, o)) in.push_back(p);
+  EXPECT_EQ(compare_in_box(known.eigenvalues, in, o, 1e-9), "");
+  int expected = 0;
+  for (std::complex<double> l : known.eigenvalues) expected += in_box(l, o) ? 1 : 0;
+  EXPECT_EQ(int(in.size()), expected);
 }
 
 TEST(BandEigen, ALooseToleranceOutsideTheBoxLeavesTheBoxStrict) {

@@ -8,7 +8,9 @@
 //    same least stable mode;
 //  - the four-car train's critical speed with tracking equals the one
 //    without (1e-9 m/s: both final brackets are full solves), with the
-//    point at the critical speed a full solve.
+//    point at the critical speed a full solve;
+//  - the points after the grid start their band solves from the bracket's
+//    discs and find the same modes as a solve from nothing.
 #include "eigen/band_eigen.hpp"
 #include "setup/prepare_scene.hpp"
 #include "stability/speed_analysis.hpp"
@@ -110,4 +112,55 @@ TEST(TrackedBisection, CriticalSpeedEqualsTheFullCoverageSearch) {
   // Two more (the final bracket's ends solved again with full coverage).
   EXPECT_EQ(tracked.evaluations, full.evaluations + 2);
   EXPECT_NEAR(tracked.at_critical.max_real_part, full.at_critical.max_real_part, 1e-8);
+}
+
+// The points after the grid (bisection midpoints, the point at the critical
+// speed) are evaluated by fresh SpeedStability objects; their band solves
+// start from the bracket's discs (plan_band_solve_from). A plan is only a
+// guess: the point at the critical speed must hold the same modes in the box
+// as a solve from nothing at that speed (1e-8 relative, same count), with
+// fewer applications of the shift-invert operator (the reason for the plan).
+TEST(TrackedBisection, PointsAfterTheGridStartFromTheBracketsDiscsAndFindTheSameModes) {
+  const PreparedScene s = prepare_scene(case_path("thesis_train_4"), {});
+  CriticalSpeedOptions opt;
+  opt.from_m_per_s = 100.0;
+  opt.to_m_per_s = 120.0;
+  opt.grid_step_m_per_s = 10.0;
+  opt.stability.solver = EigenSolverKind::sparse;
+  opt.track_in_bisection = false;
+  const CriticalSpeedResult r = find_critical_speed(s.model, s.equilibrium.state, s.speed_m_per_s, opt);
+  ASSERT_TRUE(r.critical_speed_found);
+  const StabilityPoint& planned = r.at_critical;
+  ASSERT_FALSE(planned.band_discs.empty());
+  ASSERT_TRUE(planned.eigen_warning.empty());
+  SpeedStability fresh(s.model, planned.equilibrium.state, planned.speed_m_per_s, opt.stability);
+  const StabilityPoint cold = fresh.at(planned.speed_m_per_s);
+  ASSERT_TRUE(cold.eigen_warning.empty());
+  const StabilityOptions& o = opt.stability;
+  const double top = 2.0 * 3.14159265358979 * o.max_frequency_hz;
+  auto in_box = [&](std::complex<double> l) {
+    return l.real() >= o.sparse_min_real_part_per_s && l.real() <= o.sparse_max_real_part_per_s &&
+           l.imag() >= 0.0 && l.imag() <= top;
+  };
+  auto box_values = [&](const StabilityPoint& p) {
+    std::vector<std::complex<double>> v;
+    for (const ModeReport& m : p.modes)
+      if (in_box(m.eigenvalue)) v.push_back(m.eigenvalue);
+    return v;
+  };
+  const auto a = box_values(planned), b = box_values(cold);
+  EXPECT_EQ(a.size(), b.size());
+  EXPECT_GE(a.size(), 20u);
+  for (std::complex<double> l : b) {
+    double best = 1e300;
+    for (std::complex<double> m : a) best = std::min(best, std::abs(m - l));
+    EXPECT_LT(best, 1e-8 * std::max(1.0, std::abs(l))) << l;
+  }
+  auto applications = [](const StabilityPoint& p) {
+    int n = 0;
+    for (const ShiftDisc& d : p.band_discs) n += d.operator_applications;
+    return n;
+  };
+  EXPECT_LT(applications(planned), applications(cold));
+  EXPECT_NEAR(planned.max_real_part, cold.max_real_part, 1e-8);
 }
