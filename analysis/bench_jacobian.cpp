@@ -8,9 +8,11 @@
 //  - the equilibrium Newton Jacobian: the whole coloured Jacobian with the
 //    equations' rows and unknowns' columns copied out (as before) against
 //    the coloured Jacobian of those rows and columns only;
-//  - eigen_dense: the old post-processing (EigenSolver::eigenvectors()
-//    rebuilt for every column) against the current one (built once), with
-//    the results compared bit for bit;
+//  - eigen_dense: the old one (one QR on the whole matrix,
+//    EigenSolver::eigenvectors() rebuilt for every column) against the
+//    current one (vectors built once; one QR per diagonal block where the
+//    balanced matrix decouples, eigen/decoupled_blocks.hpp), with the
+//    results compared bit for bit (one block) or eigenvalue by eigenvalue;
 //  - a critical-speed search in-process (CLI defaults: 5..150 m/s, grid
 //    2.5 m/s, automatic solver; no plots), the number the build flags are
 //    chosen by (its critical speed printed to 12 digits).
@@ -22,6 +24,7 @@
 #include "cpu_timing.hpp"
 #include "support/column_by_column_eigen.hpp"
 #include "eigen/balance.hpp"
+#include "eigen/decoupled_blocks.hpp"
 #include "eigen/eigen_analysis.hpp"
 #include "equilibrium/equilibrium.hpp"
 #include "linear/jacobian.hpp"
@@ -31,6 +34,7 @@
 #include "stability/speed_analysis.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <complex>
 #include <cstdio>
@@ -66,6 +70,24 @@ bool same_pairs(const std::vector<EigenPair>& a, const std::vector<EigenPair>& b
         std::abs(a[i].residual - b[i].residual) > 1e-14)  // residuals: round-off either way
       return false;
   return true;
+}
+
+// " (bit-identical ...)" where the legacy and current results agree bit for
+// bit (one QR on the whole matrix either way); where A decouples into blocks
+// the current values come from other QRs: the largest distance of a legacy
+// eigenvalue to the nearest current one, relative to max(1, |lambda|).
+std::string agreement(const std::vector<EigenPair>& legacy, const std::vector<EigenPair>& now) {
+  if (same_pairs(now, legacy)) return " (bit-identical values and vectors)";
+  if (legacy.size() != now.size()) return " (DIFFERENT counts!)";
+  double worst = 0.0;
+  for (const EigenPair& l : legacy) {
+    double nearest = INFINITY;
+    for (const EigenPair& p : now) nearest = std::min(nearest, std::abs(p.value - l.value));
+    worst = std::max(worst, nearest / std::max(1.0, std::abs(l.value)));
+  }
+  char text[96];
+  std::snprintf(text, sizeof text, " (eigenvalues equal to %.1e relative)", worst);
+  return text;
 }
 
 void bench_scene(const std::string& path, bool search) {
@@ -139,13 +161,25 @@ void bench_scene(const std::string& path, bool search) {
   const double t_solver_balanced = seconds_per_call(
       [&] { Eigen::EigenSolver<Eigen::MatrixXd> s(balance(lin.A).matrix, true); });
   const double t_solver = std::min(t_solver_unbalanced, t_solver_balanced);
-  std::printf("  eigen_dense (%d states): before %.3f ms, after %.3f ms (after/before %.3f; "
-              "EigenSolver alone %.3f ms on A, %.3f ms balanced incl. balancing: %.3f)%s\n",
-              int(lin.A.rows()), t_eig_before * 1e3, t_eig_after * 1e3,
-              t_eig_after / t_eig_before, t_solver_unbalanced * 1e3, t_solver_balanced * 1e3,
-              t_solver_balanced / t_solver_unbalanced,
-              same_pairs(legacy_eigen_dense(lin.A), eigen_dense(lin.A)) ? " (bit-identical values and vectors)"
-                                                                        : " (DIFFERENT!)");
+  // The QR on the diagonal blocks the balanced matrix decouples into
+  // (eigen/decoupled_blocks.hpp), balancing and splitting included: what
+  // eigen_dense runs where A decouples.
+  const std::vector<std::vector<int>> blocks = decoupled_blocks(balance(lin.A).matrix);
+  const double t_solver_blocks = seconds_per_call([&] {
+    const Eigen::MatrixXd B = balance(lin.A).matrix;
+    for (const std::vector<int>& b : decoupled_blocks(B)) {
+      const Eigen::MatrixXd part = B(b, b);
+      Eigen::EigenSolver<Eigen::MatrixXd> s(part, true);
+    }
+  });
+  std::printf("  eigen_dense (%d states, %zu block%s): before %.3f ms, after %.3f ms (after/before %.3f; "
+              "EigenSolver alone %.3f ms on A, %.3f ms balanced incl. balancing: %.3f; on the "
+              "blocks %.3f ms)%s\n",
+              int(lin.A.rows()), blocks.size(), blocks.size() == 1 ? "" : "s", t_eig_before * 1e3,
+              t_eig_after * 1e3, t_eig_after / t_eig_before, t_solver_unbalanced * 1e3,
+              t_solver_balanced * 1e3, t_solver_balanced / t_solver_unbalanced,
+              t_solver_blocks * 1e3,
+              agreement(legacy_eigen_dense(lin.A), eigen_dense(lin.A)).c_str());
 
   if (!search) return;
   CriticalSpeedOptions cs;  // the CLI's defaults for critical-speed
@@ -159,11 +193,17 @@ void bench_scene(const std::string& path, bool search) {
               "V_crit %.12g m/s\n",
               t_search, r.evaluations, r.critical_speed_found ? r.critical_speed_m_per_s : 0.0);
   // The floor: per speed one dense eigen-solve and one coloured Jacobian,
-  // nothing else (issue 11's target: the search within 1.2x of it).
+  // nothing else (issue 11's target: the search within 1.2x of it). As the
+  // issue defined it (one QR on the whole matrix) and with the QR on the
+  // decoupled blocks (the best dense solve now).
   const double floor_s = r.evaluations * (t_solver + t_col);
+  const double floor_blocks_s = r.evaluations * (std::min(t_solver, t_solver_blocks) + t_col);
   std::printf("  floor %d x (EigenSolver %.3f ms + coloured Jacobian %.3f ms) = %.4f s; "
               "search / floor %.2f\n",
               r.evaluations, t_solver * 1e3, t_col * 1e3, floor_s, t_search / floor_s);
+  std::printf("  floor with the QR on the blocks %d x (%.3f ms + %.3f ms) = %.4f s; search / floor %.2f\n",
+              r.evaluations, std::min(t_solver, t_solver_blocks) * 1e3, t_col * 1e3, floor_blocks_s,
+              t_search / floor_blocks_s);
 }
 
 // The thesis vehicle's default-range search, `repeats` times (for profilers).

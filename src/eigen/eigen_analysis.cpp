@@ -1,5 +1,6 @@
 #include "eigen/eigen_analysis.hpp"
 #include "eigen/balance.hpp"
+#include "eigen/decoupled_blocks.hpp"
 #include "eigen/eigenvector_phase.hpp"
 
 #include <arpack/arpack.hpp>
@@ -570,27 +571,47 @@ int nearest_value(const std::vector<EigenPair>& pairs, const std::vector<int>& c
 // Public functions
 // ---------------------------------------------------------------------------
 
-std::vector<EigenPair> eigen_dense(const Eigen::MatrixXd& A) {
-  require_square_and_finite(A, "eigen_dense");
-  // QR on the balanced matrix D^-1 A D (eigen/balance.hpp: same
-  // eigenvalues, backward error against a far smaller norm); A's
-  // eigenvectors are D times B's.
-  const BalancedMatrix balanced = balance(A);
-  Eigen::EigenSolver<Eigen::MatrixXd> solver(balanced.matrix, true);
+namespace {
+
+// The eigenpairs of one diagonal block B(block, block) of the balanced
+// matrix B = D^-1 A D (all of B when `block` holds every state), as
+// eigenpairs of A: vectors D v with zeros outside the block, residuals
+// against the whole A.
+void append_block_eigenpairs(const Eigen::MatrixXd& A, double norm_A, const BalancedMatrix& balanced,
+                             const std::vector<int>& block, std::vector<EigenPair>& pairs) {
+  const bool whole = block.size() == size_t(A.rows());
+  const Eigen::MatrixXd part = whole ? Eigen::MatrixXd() : Eigen::MatrixXd(balanced.matrix(block, block));
+  Eigen::EigenSolver<Eigen::MatrixXd> solver(whole ? balanced.matrix : part, true);
   if (solver.info() != Eigen::Success)
     throw std::runtime_error("eigen_dense: Eigen::EigenSolver did not converge");
-  const double norm_A = A.norm();
   // EigenSolver::eigenvectors() assembles and normalises the whole complex
   // matrix on every call: once here, not once per column (that made the
   // post-processing O(n^3) per column and most of the solve's cost).
-  const Eigen::MatrixXcd vectors = balanced.scaling.cast<Complex>().asDiagonal() * solver.eigenvectors();
+  const Eigen::VectorXd scaling = whole ? balanced.scaling : Eigen::VectorXd(balanced.scaling(block));
+  const Eigen::MatrixXcd block_vectors = scaling.cast<Complex>().asDiagonal() * solver.eigenvectors();
   const Eigen::VectorXcd& values = solver.eigenvalues();
+  // The vectors on all of A's states (zeros outside the block).
+  Eigen::MatrixXcd embedded;
+  if (!whole) {
+    embedded = Eigen::MatrixXcd::Zero(A.rows(), block_vectors.cols());
+    embedded(block, Eigen::all) = block_vectors;
+  }
+  const Eigen::MatrixXcd& vectors = whole ? block_vectors : embedded;
   // A V for all columns at once (two real matrix products: a fraction of
-  // the time of one matrix-vector product per column); each residual
+  // the time of one matrix-vector product per column; for a block only A's
+  // block columns, the vectors being zero elsewhere); each residual
   // ||A v - lambda v|| / (||A|| ||v||) is then formed from its column (on
   // the raw vector: the quotient does not depend on v's scale or phase).
   const Eigen::MatrixXd V_re = vectors.real(), V_im = vectors.imag();
-  const Eigen::MatrixXd AV_re = A * V_re, AV_im = A * V_im;
+  Eigen::MatrixXd AV_re, AV_im;
+  if (whole) {
+    AV_re = A * V_re;
+    AV_im = A * V_im;
+  } else {
+    const Eigen::MatrixXd A_block_columns = A(Eigen::all, block);
+    AV_re = A_block_columns * block_vectors.real();
+    AV_im = A_block_columns * block_vectors.imag();
+  }
   auto residual = [&](Eigen::Index j) {
     const double scale = norm_A * vectors.col(j).norm();
     if (scale == 0.0) return 0.0;
@@ -601,9 +622,8 @@ std::vector<EigenPair> eigen_dense(const Eigen::MatrixXd& A) {
         (AV_im.col(j) - lambda.real() * V_im.col(j) - lambda.imag() * V_re.col(j)).squaredNorm();
     return std::sqrt(squared) / scale;
   };
-  std::vector<EigenPair> pairs;
-  pairs.reserve(std::size_t(A.rows()));
-  for (Eigen::Index j = 0; j < A.rows(); ++j) {
+  const Eigen::Index m = values.size();
+  for (Eigen::Index j = 0; j < m; ++j) {
     pairs.push_back(EigenPair{values(j), with_canonical_phase(vectors.col(j)), residual(j)});
     // EigenSolver stores a complex pair as columns j, j+1 with value and
     // vector of j+1 the exact conjugates of j's. For real A every step of
@@ -614,13 +634,30 @@ std::vector<EigenPair> eigen_dense(const Eigen::MatrixXd& A) {
     // the partner is the conjugate of j's pair, bit for bit, at half the
     // cost (tests/eigen/test_eigen_analysis.cpp checks it against the
     // column-by-column result).
-    if (j + 1 < A.rows() && values(j).imag() != 0.0 && values(j + 1) == std::conj(values(j)) &&
+    if (j + 1 < m && values(j).imag() != 0.0 && values(j + 1) == std::conj(values(j)) &&
         vectors.col(j + 1) == vectors.col(j).conjugate()) {
       const EigenPair& first = pairs.back();
       pairs.push_back(EigenPair{std::conj(first.value), first.vector.conjugate(), first.residual});
       ++j;
     }
   }
+}
+
+}  // namespace
+
+std::vector<EigenPair> eigen_dense(const Eigen::MatrixXd& A) {
+  require_square_and_finite(A, "eigen_dense");
+  // QR on the balanced matrix D^-1 A D (eigen/balance.hpp: same
+  // eigenvalues, backward error against a far smaller norm); A's
+  // eigenvectors are D times B's. Where B decouples into diagonal blocks
+  // (eigen/decoupled_blocks.hpp: a symmetric vehicle on tangent track,
+  // lateral apart from vertical), QR on each block.
+  const BalancedMatrix balanced = balance(A);
+  const double norm_A = A.norm();
+  std::vector<EigenPair> pairs;
+  pairs.reserve(std::size_t(A.rows()));
+  for (const std::vector<int>& block : decoupled_blocks(balanced.matrix))
+    append_block_eigenpairs(A, norm_A, balanced, block, pairs);
   sort_by_descending_real_part(pairs);
   return pairs;
 }
