@@ -1,4 +1,5 @@
 #include "eigen/band_eigen.hpp"
+#include "eigen/decoupled_blocks.hpp"
 #include "eigen/eigenvector_phase.hpp"
 
 #include <Eigen/Eigenvalues>
@@ -448,11 +449,10 @@ PlannedShift* next_planned(std::vector<PlannedShift>& plan, double covered_to, d
   return chosen;
 }
 
-}  // namespace
-
-BandEigenResult eigen_sparse_band(const Eigen::SparseMatrix<double>& A,
-                                  const BandCoverOptions& o, const std::vector<ShiftDisc>& plan) {
-  validate(A, o);
+// The band of one matrix (all of A, or one diagonal block of it) covered
+// by discs, starting from `plan`.
+BandEigenResult cover_band(const Eigen::SparseMatrix<double>& A, const BandCoverOptions& o,
+                           const std::vector<ShiftDisc>& plan) {
   const double centre = 0.5 * (o.min_real_part_per_s + o.max_real_part_per_s);
   const double half_width = 0.5 * (o.max_real_part_per_s - o.min_real_part_per_s);
   const double top = 2.0 * std::numbers::pi * o.max_frequency_hz;
@@ -548,6 +548,85 @@ BandEigenResult eigen_sparse_band(const Eigen::SparseMatrix<double>& A,
     }
   }
   result.covered = covered_to >= top;
+  std::sort(result.pairs.begin(), result.pairs.end(), [](const EigenPair& a, const EigenPair& b) {
+    if (a.value.real() != b.value.real()) return a.value.real() > b.value.real();
+    return a.value.imag() > b.value.imag();
+  });
+  return result;
+}
+
+// The diagonal blocks the band is covered on: A's decoupled blocks, those
+// under kMinBlockStates merged (a Krylov solve needs k + 2 states and a
+// tiny block is cheaper inside a larger one), the merged rest joined to the
+// first block if it is still small.
+constexpr size_t kMinBlockStates = 64;
+
+std::vector<std::vector<int>> band_blocks(const Eigen::SparseMatrix<double>& A) {
+  std::vector<std::vector<int>> blocks, small;
+  std::vector<int> rest;
+  for (std::vector<int>& b : decoupled_blocks(A))
+    (b.size() < kMinBlockStates ? small : blocks).push_back(std::move(b));
+  for (const std::vector<int>& b : small) rest.insert(rest.end(), b.begin(), b.end());
+  if (!rest.empty()) {
+    if (rest.size() < kMinBlockStates && !blocks.empty()) {
+      blocks.front().insert(blocks.front().end(), rest.begin(), rest.end());
+    } else {
+      blocks.push_back(std::move(rest));
+    }
+  }
+  for (std::vector<int>& b : blocks) std::sort(b.begin(), b.end());
+  std::sort(blocks.begin(), blocks.end());  // by smallest index: the same order at every speed
+  return blocks;
+}
+
+// A(block, block) as a sparse matrix of the block's size.
+Eigen::SparseMatrix<double> diagonal_block(const Eigen::SparseMatrix<double>& A,
+                                           const std::vector<int>& block) {
+  std::vector<int> local(size_t(A.rows()), -1);
+  for (size_t k = 0; k < block.size(); ++k) local[size_t(block[k])] = int(k);
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int j : block)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it)
+      if (local[size_t(it.row())] >= 0) entries.emplace_back(local[size_t(it.row())], local[size_t(j)], it.value());
+  Eigen::SparseMatrix<double> B(Eigen::Index(block.size()), Eigen::Index(block.size()));
+  B.setFromTriplets(entries.begin(), entries.end());
+  return B;
+}
+
+}  // namespace
+
+BandEigenResult eigen_sparse_band(const Eigen::SparseMatrix<double>& A,
+                                  const BandCoverOptions& o, const std::vector<ShiftDisc>& plan) {
+  validate(A, o);
+  const std::vector<std::vector<int>> blocks = band_blocks(A);
+  if (blocks.size() == 1) return cover_band(A, o, plan);
+  const double norm_A = std::max(A.norm(), std::numeric_limits<double>::min());
+  BandEigenResult result;
+  result.covered = true;
+  for (size_t b = 0; b < blocks.size(); ++b) {
+    std::vector<ShiftDisc> block_plan;
+    for (const ShiftDisc& d : plan)
+      if (d.block == int(b)) block_plan.push_back(d);
+    BandEigenResult part = cover_band(diagonal_block(A, blocks[b]), o, block_plan);
+    result.covered = result.covered && part.covered;
+    for (ShiftDisc& d : part.discs) {
+      d.block = int(b);
+      result.discs.push_back(d);
+    }
+    // The block's eigenvectors on all of A's states (zeros elsewhere), the
+    // residual against the whole A (the entries between blocks are
+    // round-off: decoupled_blocks).
+    for (EigenPair& p : part.pairs) {
+      Eigen::VectorXcd v = Eigen::VectorXcd::Zero(A.rows());
+      for (size_t k = 0; k < blocks[b].size(); ++k) v(blocks[b][k]) = p.vector(Eigen::Index(k));
+      const Eigen::VectorXd v_re = v.real(), v_im = v.imag();
+      const Eigen::VectorXcd Av =
+          (A * v_re).cast<Complex>() + Complex(0.0, 1.0) * (A * v_im).cast<Complex>();
+      p.residual = (Av - p.value * v).norm() / (norm_A * v.norm());
+      p.vector = std::move(v);
+      result.pairs.push_back(std::move(p));
+    }
+  }
   std::sort(result.pairs.begin(), result.pairs.end(), [](const EigenPair& a, const EigenPair& b) {
     if (a.value.real() != b.value.real()) return a.value.real() > b.value.real();
     return a.value.imag() > b.value.imag();

@@ -36,6 +36,12 @@
 // at 100 m/s, planned from 95 m/s, 2381 -> 1295 operator applications,
 // 1.18 -> 0.75 s CPU, the same 105 modes in the box.
 //
+// Where A decouples into diagonal blocks (eigen/decoupled_blocks.hpp: a
+// train on tangent track, lateral apart from vertical and longitudinal),
+// each block's box is covered on its own: its own sparse LU and discs, and
+// the box's modes divided between the blocks (blocks under 64 states are
+// merged, down to the whole matrix when all are small).
+//
 // What is not computed: eigenvalues outside the box (and outside the discs,
 // which stick out of it). The stability decision looks at the box only: an
 // eigenvalue in the band with Re > max_real_part, or a real one there, would
@@ -96,6 +102,9 @@ struct ShiftDisc {
   // The solve stopped on a converged prefix of fewer than k
   // (BandCoverOptions::prefix_stop_after_restarts): `eigenvalues` of them.
   bool prefix = false;
+  // Which diagonal block of A the disc belongs to, where A decouples
+  // (eigen_sparse_band below); 0 when it does not.
+  int block = 0;
 };
 
 struct BandEigenResult {

@@ -3,8 +3,9 @@
 //  - two random blocks, shuffled by a symmetric permutation, with cross
 //    entries of 1e-3 u ||B|| (u = unit round-off): the two index sets come
 //    back; one cross entry of 10 u ||B||: one block; all 70 cross entries at
-//    0.1 u ||B|| (0.84 u ||B|| together): two blocks, at 0.2 u ||B|| each
-//    (each negligible alone, 1.7 u ||B|| together): one block;
+//    0.4 u ||B|| (3.3 u ||B|| together, under sqrt(12) u ||B|| = 3.46 u ||B||):
+//    two blocks, at 0.5 u ||B|| each (each negligible alone, 4.2 u ||B||
+//    together): one block;
 //  - eigen_dense of a shuffled block-diagonal matrix of two damped
 //    mechanical systems equals the union of the systems' own eigenpairs
 //    (values to 1e-12 relative, vectors zero outside their block);
@@ -98,13 +99,13 @@ TEST(DecoupledBlocks, FindsShuffledBlocksAndRefusesRealCoupling) {
     for (int i : s.first)
       for (int j : s.second)
         for (int t = 0; t < 2; ++t, ++placed)
-          (t == 0 ? B(i, j) : B(j, i)) = 0.1 * kUnitRoundoff * norm;
+          (t == 0 ? B(i, j) : B(j, i)) = 0.4 * kUnitRoundoff * norm;
     ASSERT_EQ(placed, 70);  // 5 x 7 x 2 entries available
-    // 70 entries of 0.1 u ||B||: sqrt(70) x 0.1 = 0.84 u ||B||: still accepted.
+    // 70 entries of 0.4 u ||B||: sqrt(70) x 0.4 = 3.3 u ||B|| <= sqrt(12) u ||B||: accepted.
     EXPECT_EQ(decoupled_blocks(B), expected_blocks(s));
     for (int i : s.first)
-      for (int j : s.second) B(i, j) = B(j, i) = 0.2 * kUnitRoundoff * norm;
-    // 70 of 0.2 u ||B||: 1.7 u ||B|| together: refused.
+      for (int j : s.second) B(i, j) = B(j, i) = 0.5 * kUnitRoundoff * norm;
+    // 70 of 0.5 u ||B||: 4.2 u ||B|| together: refused.
     EXPECT_EQ(decoupled_blocks(B).size(), 1u);
   }
   const Eigen::MatrixXd one = Eigen::MatrixXd::Constant(1, 1, 3.0);
