@@ -40,12 +40,38 @@ std::vector<int> conjugate_partners(const std::vector<ModeReport>& modes) {
   return partner;
 }
 
+std::vector<ModeShape> describe_mode_shapes(const Model& model, const LinearModel& lin,
+                                            const std::vector<EigenPair>& pairs) {
+  const ModeShapeBasis basis = mode_shape_basis(model, lin);
+  std::vector<ModeShape> shapes;
+  shapes.reserve(pairs.size());
+  for (size_t i = 0; i < pairs.size(); ++i) {
+    const EigenPair& p = pairs[i];
+    // The exact conjugate of the pair before (eigen_dense returns a complex
+    // pair's partner so): its shape is that pair's with the displacements
+    // conjugated. Every step of mode_shape maps conjugate input to
+    // conjugate output exactly (moduli and kinetic shares are the same, the
+    // reference coordinate too; complex products and quotients, with or
+    // without fused multiply-add, negate only their imaginary part), so
+    // this is what mode_shape would return, bit for bit
+    // (tests/stability/test_mode_shapes.cpp), at no cost.
+    if (i > 0 && p.value.imag() != 0.0 && p.value == std::conj(pairs[i - 1].value) &&
+        p.vector == pairs[i - 1].vector.conjugate()) {
+      shapes.push_back(shapes.back());
+      for (CoordinateMotion& c : shapes.back().coordinates) c.displacement = std::conj(c.displacement);
+    } else {
+      shapes.push_back(mode_shape(model, lin, basis, Eigen::MatrixXd(), p.value, p.vector));
+    }
+  }
+  return shapes;
+}
+
 std::vector<ModeReport> describe_modes(const Model& model, const LinearModel& lin,
                                        const std::vector<EigenPair>& pairs) {
   // linearize() sets norm_A (dense or sparse A); a hand-made LinearModel may not.
   const double zero = 1e-9 * std::max(1.0, lin.norm_A > 0.0 ? lin.norm_A : lin.A.norm());
   const BodyRoles roles = body_roles(model);
-  const ModeShapeBasis basis = mode_shape_basis(model, lin);
+  const std::vector<ModeShape> shapes = describe_mode_shapes(model, lin, pairs);
   std::vector<ModeReport> modes;
   modes.reserve(pairs.size());
   for (size_t i = 0; i < pairs.size(); ++i) {
@@ -58,22 +84,7 @@ std::vector<ModeReport> describe_modes(const Model& model, const LinearModel& li
     m.residual = p.residual;
     m.neutral = std::abs(p.value) <= zero;
     m.vector = p.vector;
-    // The exact conjugate of the pair before (eigen_dense returns a complex
-    // pair's partner so): its shape is that pair's with the displacements
-    // conjugated. Every step of mode_shape maps conjugate input to
-    // conjugate output exactly (moduli and kinetic shares are the same, the
-    // reference coordinate too; complex products and quotients, with or
-    // without fused multiply-add, negate only their imaginary part), so
-    // this is what mode_shape would return, bit for bit
-    // (tests/stability/test_mode_shapes.cpp), at no cost.
-    if (i > 0 && p.value.imag() != 0.0 && p.value == std::conj(pairs[i - 1].value) &&
-        p.vector == pairs[i - 1].vector.conjugate()) {
-      m.shape = modes.back().shape;
-      for (CoordinateMotion& c : m.shape.coordinates) c.displacement = std::conj(c.displacement);
-    } else {
-      m.shape = mode_shape(model, lin, basis, Eigen::MatrixXd(), p.value, p.vector);
-    }
-    const std::vector<CoordinateMotion>& coords = m.shape.coordinates;
+    const std::vector<CoordinateMotion>& coords = shapes[i].coordinates;
     std::vector<int> order(coords.size());
     for (size_t k = 0; k < coords.size(); ++k) {
       if (coords[k].coordinate == 1 || coords[k].coordinate == 3 || coords[k].coordinate == 5)
@@ -96,7 +107,7 @@ std::vector<ModeReport> describe_modes(const Model& model, const LinearModel& li
       m.participation.push_back({model.bodies[size_t(c.body)].name, c.coordinate, c.kinetic_share});
     }
     m.shape_name = m.neutral ? "neutral (rigid-body/cyclic)"
-                             : mode_name_from_shape(model, roles, m.shape, p.value);
+                             : mode_name_from_shape(model, roles, shapes[i], p.value);
     modes.push_back(std::move(m));
   }
   std::vector<std::string> names;

@@ -31,9 +31,9 @@ struct ModeReport {
   // mate's name.
   std::string name;
   std::string shape_name;  // from the shape alone, before making names unique
-  // Displacements and kinetic shares (potential shares need the stiffness:
-  // mode_shape with suspension_stiffness, done where a report wants them).
-  ModeShape shape;
+  // The shape itself is not kept (26 KB per mode of a 16-car train, at every
+  // speed of a sweep): describe_mode_shapes gives it again, reports form it
+  // with the potential shares (report/mode_shape_report.hpp full_mode_shapes).
   std::vector<Participation> participation;  // largest first (at most 6)
   // Share of the kinetic energy in the lateral plane (lateral, roll and yaw
   // of every body): near 1 for hunting and sway, near 0 for bounce, pitch
@@ -48,6 +48,13 @@ struct ModeReport {
 // ratio: the least damped of a name keeps it plain).
 std::vector<ModeReport> describe_modes(const Model& model, const LinearModel& lin,
                                        const std::vector<EigenPair>& pairs);
+
+// The shapes describe_modes names the modes from (displacements and kinetic
+// shares, no potential shares), one per pair; a complex pair's partner (the
+// exact conjugate of the pair before, as eigen_dense returns it) gets its
+// mate's shape with the displacements conjugated.
+std::vector<ModeShape> describe_mode_shapes(const Model& model, const LinearModel& lin,
+                                            const std::vector<EigenPair>& pairs);
 
 // Threshold below which |lambda| counts as zero: round-off of the
 // eigen-solver relative to the matrix norm.

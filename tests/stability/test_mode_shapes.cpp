@@ -221,7 +221,8 @@ TEST(ModeRanking, LeastDampedIgnoresADecayingRealRootThatHasTheLargestRealPart) 
   EXPECT_EQ(least_damped_mode(modes, 20.0, 0.0), 3);
 }
 
-// describe_modes takes a complex pair's partner's shape as the conjugate of
+// describe_mode_shapes (what describe_modes names the modes from) takes a
+// complex pair's partner's shape as the conjugate of
 // the pair's, forms the shape basis once, and picks the six largest shares
 // by a partial sort: each must give what the plain computation gives (the
 // shape of every mode by mode_shape on its own, the participation by a
@@ -233,13 +234,15 @@ TEST(ModeShape, DescribeModesShortcutsMatchThePlainComputation) {
   const LinearModel lin = linearize(s.model, s.speed_m_per_s, s.equilibrium.state);
   const std::vector<EigenPair> pairs = eigen_dense(lin.A);
   const std::vector<ModeReport> modes = describe_modes(s.model, lin, pairs);
+  const std::vector<ModeShape> shapes = describe_mode_shapes(s.model, lin, pairs);
   ASSERT_EQ(modes.size(), pairs.size());
+  ASSERT_EQ(shapes.size(), pairs.size());
   int partners = 0;
   for (size_t i = 0; i < pairs.size(); ++i) {
     if (i > 0 && pairs[i].value == std::conj(pairs[i - 1].value)) ++partners;
     const ModeShape plain =
         mode_shape(s.model, lin, Eigen::MatrixXd(), pairs[i].value, pairs[i].vector);
-    const ModeShape& got = modes[i].shape;
+    const ModeShape& got = shapes[i];
     EXPECT_EQ(got.reference, plain.reference) << i;
     ASSERT_EQ(got.coordinates.size(), plain.coordinates.size());
     std::vector<int> order;

@@ -30,6 +30,17 @@ std::string case_path(const std::string& name) {
   return std::string(RAILSTAB_CASES_DIR) + "/" + name + ".toml";
 }
 
+// The four-car train's searches below: 100..120 m/s, grid 10 m/s, sparse solver.
+CriticalSpeedOptions four_car_search(bool track) {
+  CriticalSpeedOptions opt;
+  opt.from_m_per_s = 100.0;
+  opt.to_m_per_s = 120.0;
+  opt.grid_step_m_per_s = 10.0;
+  opt.stability.solver = EigenSolverKind::sparse;
+  opt.track_in_bisection = track;
+  return opt;
+}
+
 }  // namespace
 
 TEST(TrackedBisection, NearestEigenpairsAreTheKNearestKnownOnes) {
@@ -94,12 +105,7 @@ TEST(TrackedBisection, TrackedPointEqualsTheFullSolveInItsDisc) {
 
 TEST(TrackedBisection, CriticalSpeedEqualsTheFullCoverageSearch) {
   const PreparedScene s = prepare_scene(case_path("thesis_train_4"), {});
-  CriticalSpeedOptions opt;
-  opt.from_m_per_s = 100.0;
-  opt.to_m_per_s = 120.0;
-  opt.grid_step_m_per_s = 10.0;
-  opt.stability.solver = EigenSolverKind::sparse;
-  opt.track_in_bisection = false;
+  CriticalSpeedOptions opt = four_car_search(false);
   const CriticalSpeedResult full = find_critical_speed(s.model, s.equilibrium.state, s.speed_m_per_s, opt);
   opt.track_in_bisection = true;
   const CriticalSpeedResult tracked = find_critical_speed(s.model, s.equilibrium.state, s.speed_m_per_s, opt);
@@ -122,12 +128,7 @@ TEST(TrackedBisection, CriticalSpeedEqualsTheFullCoverageSearch) {
 // fewer applications of the shift-invert operator (the reason for the plan).
 TEST(TrackedBisection, PointsAfterTheGridStartFromTheBracketsDiscsAndFindTheSameModes) {
   const PreparedScene s = prepare_scene(case_path("thesis_train_4"), {});
-  CriticalSpeedOptions opt;
-  opt.from_m_per_s = 100.0;
-  opt.to_m_per_s = 120.0;
-  opt.grid_step_m_per_s = 10.0;
-  opt.stability.solver = EigenSolverKind::sparse;
-  opt.track_in_bisection = false;
+  const CriticalSpeedOptions opt = four_car_search(false);
   const CriticalSpeedResult r = find_critical_speed(s.model, s.equilibrium.state, s.speed_m_per_s, opt);
   ASSERT_TRUE(r.critical_speed_found);
   const StabilityPoint& planned = r.at_critical;
