@@ -162,12 +162,13 @@ int profile_run(const std::string& cases_dir, int cars) {
   const double at_s = cpu_seconds() - t0;
   std::printf("N = %d (%d states, %d linear, A: %ld non-zeros): equilibrium from 95 m/s %.4f s "
               "(%d Newton iterations), linearisation %.4f s, band eigen-solve %.4f s (%zu shifts, "
-              "%zu modes), describe_modes %.4f s; SpeedStability::at %.4f s\n",
+              "%zu modes, diagonal blocks %d), describe_modes %.4f s; SpeedStability::at %.4f s\n",
               cars, model.state_size(), lin.states(), long(lin.A_sparse.nonZeros()), eq_s,
-              eq.iterations, lin_s, eig_s, band.discs.size(), band.pairs.size(), describe_s, at_s);
+              eq.iterations, lin_s, eig_s, band.discs.size(), band.pairs.size(), band.blocks,
+              describe_s, at_s);
   for (const ShiftDisc& d : band.discs)
-    std::printf("  shift %+.3f%+.3fi radius %.3f k %d: %d restarts, %d OP applications\n",
-                d.shift.real(), d.shift.imag(), d.radius, d.eigenvalues, d.restarts,
+    std::printf("  block %d shift %+.3f%+.3fi radius %.3f k %d: %d restarts, %d OP applications\n",
+                d.block, d.shift.real(), d.shift.imag(), d.radius, d.eigenvalues, d.restarts,
                 d.operator_applications);
   t0 = cpu_seconds();
   const CriticalSpeedResult r = find_critical_speed(model, s.equilibrium.state, s.speed_m_per_s,

@@ -599,15 +599,28 @@ BandEigenResult eigen_sparse_band(const Eigen::SparseMatrix<double>& A,
                                   const BandCoverOptions& o, const std::vector<ShiftDisc>& plan) {
   validate(A, o);
   const std::vector<std::vector<int>> blocks = band_blocks(A);
-  if (blocks.size() == 1) return cover_band(A, o, plan);
+  // Each block starts from the plan's discs of the same block (a disc of a
+  // block that no longer exists is dropped: guesses only).
+  auto plan_of = [&plan](int b) {
+    std::vector<ShiftDisc> block_plan;
+    for (const ShiftDisc& d : plan)
+      if (d.block == b) block_plan.push_back(d);
+    return block_plan;
+  };
+  if (blocks.size() == 1) return cover_band(A, o, plan_of(0));
   const double norm_A = std::max(A.norm(), std::numeric_limits<double>::min());
   BandEigenResult result;
   result.covered = true;
+  result.blocks = int(blocks.size());
   for (size_t b = 0; b < blocks.size(); ++b) {
-    std::vector<ShiftDisc> block_plan;
-    for (const ShiftDisc& d : plan)
-      if (d.block == int(b)) block_plan.push_back(d);
-    BandEigenResult part = cover_band(diagonal_block(A, blocks[b]), o, block_plan);
+    // max_shifts bounds the whole solve: each block gets what is left.
+    BandCoverOptions block_options = o;
+    block_options.max_shifts = o.max_shifts - int(result.discs.size());
+    if (block_options.max_shifts < 1) {
+      result.covered = false;
+      break;
+    }
+    BandEigenResult part = cover_band(diagonal_block(A, blocks[b]), block_options, plan_of(int(b)));
     result.covered = result.covered && part.covered;
     for (ShiftDisc& d : part.discs) {
       d.block = int(b);

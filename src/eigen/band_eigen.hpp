@@ -112,6 +112,7 @@ struct BandEigenResult {
   std::vector<EigenPair> pairs;
   std::vector<ShiftDisc> discs;
   bool covered = false;  // the discs cover the box
+  int blocks = 1;        // diagonal blocks covered separately (1: A did not decouple)
 };
 
 // Throws std::invalid_argument for a non-square or non-finite A, an empty

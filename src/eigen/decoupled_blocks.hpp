@@ -18,8 +18,12 @@
 // entries it drops have together a Frobenius norm of at most sqrt(n) u ||B||_F:
 // each is at the round-off level of forming B's entries, and together they
 // stay below the backward error the solvers already carry (QR on the whole
-// matrix ~n u ||B||_F; the sparse band solve converges Ritz values to 1e-12).
-// Otherwise the one block is all of B.
+// matrix ~n u ||B||_F; the sparse LU of A - sigma I ~n u ||A - sigma I||).
+// Dropping them moves an eigenvalue of one block only at second order:
+// its left and right eigenvectors vanish on the other blocks, so y^H E x = 0
+// and the change is ~||E||^2 / (distance to the other blocks' eigenvalues);
+// only an eigenvalue two blocks share moves by ~||E||, as it does in a QR
+// on the whole matrix. Otherwise the one block is all of B.
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 

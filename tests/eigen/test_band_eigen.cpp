@@ -241,7 +241,7 @@ TEST(BandEigen, APlanFromANearbyMatrixOrAWrongPlanFindsEveryEigenvalueInTheBox) 
   const BandEigenResult wrong = eigen_sparse_band(moved, o, nonsense);
   int expected = 0;
   for (std::complex<double> l : reference) expected += in_box(l, o) ? 1 : 0;
-  ASSERT_GT(expected, 10);
+  ASSERT_GT(expected, 20);
   for (const BandEigenResult* r : {&unplanned, &planned, &wrong}) {
     ASSERT_TRUE(r->covered);
     std::vector<EigenPair> in;
@@ -290,66 +290,140 @@ TEST(BandEigen, ADiscAboveAGapIsKeptAndTheGapFilledBelowIt) {
   EXPECT_EQ(int(in.size()), expected);
 }
 
-// A matrix that decouples into two diagonal blocks (two non-normal known
-// spectra of 80 and 100 states, shuffled by a symmetric permutation): each
-// block's box is covered on its own (discs tagged 0 and 1), every known
-// eigenvalue in the box found once (1e-8 relative: non-normal), each
-// eigenvector zero outside its block with a residual against the whole
-// matrix below 1e-10; planned from its own discs, the same eigenvalues.
-TEST(BandEigen, ADecoupledMatrixIsCoveredBlockByBlock) {
-  const test::KnownSpectrum first = non_normal_known_spectrum(3, 40);
-  const test::KnownSpectrum second = non_normal_known_spectrum(4, 50);
-  const int n1 = int(first.matrix.rows()), n = n1 + int(second.matrix.rows());
-  // State k of the block-diagonal matrix goes to position[k].
+// Known spectra put side by side as diagonal blocks, then shuffled by a
+// symmetric permutation (state k of the block-diagonal matrix goes to a
+// random position): a matrix that decouples, with the block of each state.
+struct ShuffledSpectra {
+  Eigen::SparseMatrix<double> matrix;
+  std::vector<std::complex<double>> eigenvalues;
+  std::vector<int> part_of;  // state -> index of the spectrum it came from
+};
+
+ShuffledSpectra shuffled_spectra(const std::vector<test::KnownSpectrum>& parts, unsigned seed) {
+  int n = 0;
+  for (const test::KnownSpectrum& p : parts) n += int(p.matrix.rows());
   std::vector<int> position(static_cast<size_t>(n));
   std::iota(position.begin(), position.end(), 0);
-  std::mt19937 rng(9);
+  std::mt19937 rng(seed);
   std::shuffle(position.begin(), position.end(), rng);
+  ShuffledSpectra out;
+  out.part_of.assign(size_t(n), -1);
   std::vector<Eigen::Triplet<double>> entries;
-  for (int b = 0; b < 2; ++b) {
-    const Eigen::SparseMatrix<double>& M = b == 0 ? first.matrix : second.matrix;
-    const int offset = b == 0 ? 0 : n1;
+  int offset = 0;
+  for (size_t b = 0; b < parts.size(); ++b) {
+    const Eigen::SparseMatrix<double>& M = parts[b].matrix;
     for (Eigen::Index j = 0; j < M.outerSize(); ++j)
       for (Eigen::SparseMatrix<double>::InnerIterator it(M, j); it; ++it)
         entries.emplace_back(position[size_t(offset + it.row())], position[size_t(offset + it.col())],
                              it.value());
+    for (Eigen::Index k = 0; k < M.rows(); ++k) out.part_of[size_t(position[size_t(offset + k)])] = int(b);
+    out.eigenvalues.insert(out.eigenvalues.end(), parts[b].eigenvalues.begin(), parts[b].eigenvalues.end());
+    offset += int(M.rows());
   }
-  Eigen::SparseMatrix<double> A(n, n);
-  A.setFromTriplets(entries.begin(), entries.end());
-  std::vector<bool> in_first(static_cast<size_t>(n));
-  for (int k = 0; k < n; ++k) in_first[size_t(position[size_t(k)])] = k < n1;
-  std::vector<std::complex<double>> reference = first.eigenvalues;
-  reference.insert(reference.end(), second.eigenvalues.begin(), second.eigenvalues.end());
+  out.matrix.resize(n, n);
+  out.matrix.setFromTriplets(entries.begin(), entries.end());
+  return out;
+}
+
+// A matrix that decouples into two diagonal blocks (two non-normal known
+// spectra of 80 and 100 states, shuffled): each block's box is covered on
+// its own (discs tagged 0 and 1), every known eigenvalue in the box found
+// once (1e-8 relative: non-normal), each eigenvector zero outside its block
+// with a residual against the whole matrix below 1e-10; planned from its own
+// discs, the same eigenvalues. A plan's disc goes to its own block only: a
+// probe disc tagged 1 moves block 1's first shift and leaves block 0's
+// discs exactly as without a plan, a disc tagged 7 (no such block) is
+// dropped. max_shifts bounds all blocks together.
+TEST(BandEigen, ADecoupledMatrixIsCoveredBlockByBlock) {
+  const ShuffledSpectra m =
+      shuffled_spectra({non_normal_known_spectrum(3, 40), non_normal_known_spectrum(4, 50)}, 9);
+  const Eigen::SparseMatrix<double>& A = m.matrix;
+  const int n = int(A.rows());
   int expected = 0;
   BandCoverOptions o;
   o.eigenvalues_per_shift = 8;
   o.min_real_part_per_s = -5.0;  // a wider box than the default: more modes in it
   o.max_real_part_per_s = 5.0;
-  for (std::complex<double> l : reference) expected += in_box(l, o) ? 1 : 0;
+  for (std::complex<double> l : m.eigenvalues) expected += in_box(l, o) ? 1 : 0;
   ASSERT_GT(expected, 10);
   const BandEigenResult r = eigen_sparse_band(A, o);
+  EXPECT_EQ(r.blocks, 2);
   const BandEigenResult planned = eigen_sparse_band(A, o, r.discs);
   for (const BandEigenResult* result : {&r, &planned}) {
     ASSERT_TRUE(result->covered);
     std::vector<EigenPair> in;
     for (const EigenPair& p : result->pairs)
       if (in_box(p.value, o)) in.push_back(p);
-    EXPECT_EQ(compare_in_box(reference, in, o, 1e-8), "");
+    EXPECT_EQ(compare_in_box(m.eigenvalues, in, o, 1e-8), "");
     EXPECT_EQ(int(in.size()), expected);
     for (const EigenPair& p : result->pairs) {
       EXPECT_LT(p.residual, 1e-10) << p.value;
-      double on_first = 0.0, on_second = 0.0;
-      for (int i = 0; i < n; ++i) (in_first[size_t(i)] ? on_first : on_second) += std::norm(p.vector(i));
-      EXPECT_TRUE(on_first == 0.0 || on_second == 0.0) << p.value;
+      double on[2] = {0.0, 0.0};
+      for (int i = 0; i < n; ++i) on[m.part_of[size_t(i)]] += std::norm(p.vector(i));
+      EXPECT_TRUE(on[0] == 0.0 || on[1] == 0.0) << p.value;
     }
   }
-  int tagged[2] = {0, 0};
-  for (const ShiftDisc& d : r.discs) {
-    ASSERT_TRUE(d.block == 0 || d.block == 1);
-    ++tagged[d.block];
+  auto discs_of = [](const BandEigenResult& result, int block) {
+    std::vector<ShiftDisc> out;
+    for (const ShiftDisc& d : result.discs)
+      if (d.block == block) out.push_back(d);
+    return out;
+  };
+  ASSERT_FALSE(discs_of(r, 0).empty());
+  ASSERT_FALSE(discs_of(r, 1).empty());
+  std::vector<ShiftDisc> probe(2);
+  probe[0].shift = {0.0, 100.0};
+  probe[0].radius = 30.0;  // planned half-height sqrt(30^2 - 5^2): placed at 0.9 of it
+  probe[0].eigenvalues = 8;
+  probe[0].block = 1;
+  probe[1] = probe[0];
+  probe[1].shift = {0.0, 50.0};
+  probe[1].block = 7;
+  const BandEigenResult probed = eigen_sparse_band(A, o, probe);
+  ASSERT_TRUE(probed.covered);
+  const std::vector<ShiftDisc> cold0 = discs_of(r, 0), probed0 = discs_of(probed, 0);
+  ASSERT_EQ(probed0.size(), cold0.size());
+  for (size_t i = 0; i < cold0.size(); ++i) {
+    EXPECT_EQ(probed0[i].shift, cold0[i].shift) << i;
+    EXPECT_EQ(probed0[i].radius, cold0[i].radius) << i;
   }
-  EXPECT_GT(tagged[0], 0);
-  EXPECT_GT(tagged[1], 0);
+  const std::vector<ShiftDisc> probed1 = discs_of(probed, 1);
+  ASSERT_FALSE(probed1.empty());
+  EXPECT_NEAR(probed1.front().shift.imag(), 0.9 * std::sqrt(30.0 * 30.0 - 25.0), 1e-6);
+  EXPECT_EQ(probed1.front().eigenvalues, 8);
+  BandCoverOptions few = o;
+  few.max_shifts = 3;
+  const BandEigenResult limited = eigen_sparse_band(A, few);
+  EXPECT_LE(limited.discs.size(), 3u);
+  EXPECT_FALSE(limited.covered);
+}
+
+// Blocks under 64 states are merged: 80, 70, 30 and 20 states give two
+// blocks (the 30 and 20 together are still under 64 and join the first),
+// 80, 40 and 30 give two (the merged 70 is a block of its own); every
+// eigenvalue in the box found once either way.
+TEST(BandEigen, SmallDecoupledBlocksAreMerged) {
+  BandCoverOptions o;
+  o.eigenvalues_per_shift = 8;
+  o.min_real_part_per_s = -5.0;
+  o.max_real_part_per_s = 5.0;
+  const std::vector<std::vector<int>> layouts{{40, 35, 15, 10}, {40, 20, 15}};
+  unsigned seed = 20;
+  for (const std::vector<int>& pairs_per_block : layouts) {
+    std::vector<test::KnownSpectrum> parts;
+    for (int pairs : pairs_per_block) parts.push_back(non_normal_known_spectrum(seed++, pairs));
+    const ShuffledSpectra m = shuffled_spectra(parts, seed++);
+    const BandEigenResult r = eigen_sparse_band(m.matrix, o);
+    EXPECT_EQ(r.blocks, 2);
+    ASSERT_TRUE(r.covered);
+    std::vector<EigenPair> in;
+    for (const EigenPair& p : r.pairs)
+      if (in_box(p.value, o)) in.push_back(p);
+    EXPECT_EQ(compare_in_box(m.eigenvalues, in, o, 1e-8), "");
+    int expected = 0;
+    for (std::complex<double> l : m.eigenvalues) expected += in_box(l, o) ? 1 : 0;
+    EXPECT_EQ(int(in.size()), expected);
+  }
 }
 
 TEST(BandEigen, ALooseToleranceOutsideTheBoxLeavesTheBoxStrict) {
