@@ -466,17 +466,16 @@ BandEigenResult cover_band(const Eigen::SparseMatrix<double>& A, const BandCover
   int k = o.eigenvalues_per_shift;
   Complex requested{centre, 0.0};
   bool again = false;  // the last disc was too narrow: the same shift, a larger k
-  // Spans of discs that reached the box's width but left a gap below them
-  // (their eigenvalues are kept): once the gap is filled, the band is
-  // covered to their top without solving there again.
+  // Spans [lower, upper] of discs that reached the box's width but left a
+  // gap below them (their eigenvalues are kept), ordered by lower end: once
+  // the gap is filled, the band is covered to their top without solving
+  // there again.
   std::vector<std::pair<double, double>> islands;
   while (covered_to < top && int(result.discs.size()) < o.max_shifts) {
     if (!again && !islands.empty()) {
       // Fill the gap below the lowest island: a shift at its middle, whose
       // disc joins both sides if it reaches half the gap's height.
-      double gap_top = top;
-      for (const auto& [lo, hi] : islands) gap_top = std::min(gap_top, lo);
-      const double half_gap = 0.5 * (gap_top - covered_to);
+      const double half_gap = 0.5 * (std::min(islands.front().first, top) - covered_to);
       requested = Complex(centre, covered_to + std::min(expected_half, half_gap));
     } else if (!again) {
       requested = Complex(centre, std::min(covered_to + expected_half, top));
@@ -531,19 +530,14 @@ BandEigenResult cover_band(const Eigen::SparseMatrix<double>& A, const BandCover
     if (sigma.imag() - h <= covered_to) {
       covered_to = std::max(covered_to, sigma.imag() + h);
       expected_half = h;
-      // Islands the covered part now reaches join it.
-      for (bool joined = true; joined;) {
-        joined = false;
-        for (size_t i = 0; i < islands.size(); ++i)
-          if (islands[i].first <= covered_to) {
-            covered_to = std::max(covered_to, islands[i].second);
-            islands.erase(islands.begin() + std::ptrdiff_t(i));
-            joined = true;
-            break;
-          }
+      // Islands the covered part now reaches join it (lowest first).
+      while (!islands.empty() && islands.front().first <= covered_to) {
+        covered_to = std::max(covered_to, islands.front().second);
+        islands.erase(islands.begin());
       }
     } else {
-      islands.emplace_back(sigma.imag() - h, sigma.imag() + h);
+      const std::pair<double, double> span{sigma.imag() - h, sigma.imag() + h};
+      islands.insert(std::upper_bound(islands.begin(), islands.end(), span), span);
       expected_half = 0.5 * h;  // a gap below: the next shift nearer the covered part
     }
   }

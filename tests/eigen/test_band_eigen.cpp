@@ -42,6 +42,21 @@ bool in_box(std::complex<double> l, const BandCoverOptions& o) {
          l.imag() <= 2.0 * std::numbers::pi * o.max_frequency_hz;
 }
 
+// The found pairs whose eigenvalue lies in the box.
+std::vector<EigenPair> pairs_in_box(const std::vector<EigenPair>& pairs, const BandCoverOptions& o) {
+  std::vector<EigenPair> in;
+  for (const EigenPair& p : pairs)
+    if (in_box(p.value, o)) in.push_back(p);
+  return in;
+}
+
+// How many of the reference eigenvalues lie in the box.
+int count_in_box(const std::vector<std::complex<double>>& values, const BandCoverOptions& o) {
+  int count = 0;
+  for (std::complex<double> l : values) count += in_box(l, o) ? 1 : 0;
+  return count;
+}
+
 // Every reference eigenvalue in the box is among `found` (each matched once),
 // and every found one is a reference eigenvalue.
 std::string compare_in_box(const std::vector<std::complex<double>>& reference,
@@ -120,9 +135,7 @@ TEST(BandEigen, NearestOnANonNormalMatrixAreTheKNearestKnownOnes) {
   o.eigenvalues_per_shift = 8;
   const BandEigenResult band = eigen_sparse_band(known.matrix, o);
   ASSERT_TRUE(band.covered);
-  std::vector<EigenPair> in;
-  for (const EigenPair& p : band.pairs)
-    if (in_box(p.value, o)) in.push_back(p);
+  const std::vector<EigenPair> in = pairs_in_box(band.pairs, o);
   EXPECT_EQ(compare_in_box(known.eigenvalues, in, o, 1e-8), "");
 }
 
@@ -155,12 +168,9 @@ TEST(BandEigen, FindsEveryKnownEigenvalueInTheBoxOnce) {
   ASSERT_TRUE(r.covered);
   EXPECT_GT(r.discs.size(), 3u);
   // Only eigenvalues in the box (the discs stick out: more may be found).
-  std::vector<EigenPair> in;
-  for (const EigenPair& p : r.pairs)
-    if (in_box(p.value, o)) in.push_back(p);
+  const std::vector<EigenPair> in = pairs_in_box(r.pairs, o);
   EXPECT_EQ(compare_in_box(reference, in, o, 1e-9), "");
-  int expected = 0;
-  for (std::complex<double> l : reference) expected += in_box(l, o) ? 1 : 0;
+  const int expected = count_in_box(reference, o);
   EXPECT_EQ(int(in.size()), expected);
   EXPECT_GT(expected, 20);
 }
@@ -204,12 +214,9 @@ TEST(BandEigen, AConvergedPrefixStopFindsEveryEigenvalueOfACutCluster) {
   int prefix_stops = 0;
   for (const ShiftDisc& d : r.discs) prefix_stops += d.prefix ? 1 : 0;
   EXPECT_GT(prefix_stops, 0);
-  std::vector<EigenPair> in;
-  for (const EigenPair& p : r.pairs)
-    if (in_box(p.value, o)) in.push_back(p);
+  const std::vector<EigenPair> in = pairs_in_box(r.pairs, o);
   EXPECT_EQ(compare_in_box(reference, in, o, 1e-8), "");
-  int expected = 0;
-  for (std::complex<double> l : reference) expected += in_box(l, o) ? 1 : 0;
+  const int expected = count_in_box(reference, o);
   EXPECT_EQ(int(in.size()), expected);
   EXPECT_GE(expected, 8);
 }
@@ -239,14 +246,11 @@ TEST(BandEigen, APlanFromANearbyMatrixOrAWrongPlanFindsEveryEigenvalueInTheBox) 
     d.eigenvalues = 1;
   }
   const BandEigenResult wrong = eigen_sparse_band(moved, o, nonsense);
-  int expected = 0;
-  for (std::complex<double> l : reference) expected += in_box(l, o) ? 1 : 0;
+  const int expected = count_in_box(reference, o);
   ASSERT_GT(expected, 20);
   for (const BandEigenResult* r : {&unplanned, &planned, &wrong}) {
     ASSERT_TRUE(r->covered);
-    std::vector<EigenPair> in;
-    for (const EigenPair& p : r->pairs)
-      if (in_box(p.value, o)) in.push_back(p);
+    const std::vector<EigenPair> in = pairs_in_box(r->pairs, o);
     EXPECT_EQ(compare_in_box(reference, in, o, 1e-9), "");
     EXPECT_EQ(int(in.size()), expected);
   }
@@ -281,12 +285,9 @@ TEST(BandEigen, ADiscAboveAGapIsKeptAndTheGapFilledBelowIt) {
     const double y = r.discs[i].shift.imag();
     EXPECT_FALSE(y > y0 - h && y < y0 + h) << "shift " << y << " inside the island";
   }
-  std::vector<EigenPair> in;
-  for (const EigenPair& p : r.pairs)
-    if (in_box(p.value, o)) in.push_back(p);
+  const std::vector<EigenPair> in = pairs_in_box(r.pairs, o);
   EXPECT_EQ(compare_in_box(known.eigenvalues, in, o, 1e-9), "");
-  int expected = 0;
-  for (std::complex<double> l : known.eigenvalues) expected += in_box(l, o) ? 1 : 0;
+  const int expected = count_in_box(known.eigenvalues, o);
   EXPECT_EQ(int(in.size()), expected);
 }
 
@@ -339,21 +340,18 @@ TEST(BandEigen, ADecoupledMatrixIsCoveredBlockByBlock) {
       shuffled_spectra({non_normal_known_spectrum(3, 40), non_normal_known_spectrum(4, 50)}, 9);
   const Eigen::SparseMatrix<double>& A = m.matrix;
   const int n = int(A.rows());
-  int expected = 0;
   BandCoverOptions o;
   o.eigenvalues_per_shift = 8;
   o.min_real_part_per_s = -5.0;  // a wider box than the default: more modes in it
   o.max_real_part_per_s = 5.0;
-  for (std::complex<double> l : m.eigenvalues) expected += in_box(l, o) ? 1 : 0;
+  const int expected = count_in_box(m.eigenvalues, o);
   ASSERT_GT(expected, 10);
   const BandEigenResult r = eigen_sparse_band(A, o);
   EXPECT_EQ(r.blocks, 2);
   const BandEigenResult planned = eigen_sparse_band(A, o, r.discs);
   for (const BandEigenResult* result : {&r, &planned}) {
     ASSERT_TRUE(result->covered);
-    std::vector<EigenPair> in;
-    for (const EigenPair& p : result->pairs)
-      if (in_box(p.value, o)) in.push_back(p);
+    const std::vector<EigenPair> in = pairs_in_box(result->pairs, o);
     EXPECT_EQ(compare_in_box(m.eigenvalues, in, o, 1e-8), "");
     EXPECT_EQ(int(in.size()), expected);
     for (const EigenPair& p : result->pairs) {
@@ -416,12 +414,9 @@ TEST(BandEigen, SmallDecoupledBlocksAreMerged) {
     const BandEigenResult r = eigen_sparse_band(m.matrix, o);
     EXPECT_EQ(r.blocks, 2);
     ASSERT_TRUE(r.covered);
-    std::vector<EigenPair> in;
-    for (const EigenPair& p : r.pairs)
-      if (in_box(p.value, o)) in.push_back(p);
+    const std::vector<EigenPair> in = pairs_in_box(r.pairs, o);
     EXPECT_EQ(compare_in_box(m.eigenvalues, in, o, 1e-8), "");
-    int expected = 0;
-    for (std::complex<double> l : m.eigenvalues) expected += in_box(l, o) ? 1 : 0;
+    const int expected = count_in_box(m.eigenvalues, o);
     EXPECT_EQ(int(in.size()), expected);
   }
 }
@@ -492,9 +487,7 @@ TEST_P(BandEigenOnCase, EqualsDenseInTheBox) {
   BandCoverOptions o;
   const BandEigenResult r = eigen_sparse_band(p.linear.A.sparseView(), o);
   ASSERT_TRUE(r.covered);
-  std::vector<EigenPair> in;
-  for (const EigenPair& q : r.pairs)
-    if (in_box(q.value, o)) in.push_back(q);
+  const std::vector<EigenPair> in = pairs_in_box(r.pairs, o);
   std::vector<std::complex<double>> reference;
   for (const ModeReport& m : p.modes) reference.push_back(m.eigenvalue);
   EXPECT_EQ(compare_in_box(reference, in, o, 1e-8), "");
