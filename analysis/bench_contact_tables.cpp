@@ -2,8 +2,8 @@
 // 1 s), median of repeats, with the benchmark S1002/UIC60 1:40 profiles.
 // Usage: bench_contact_tables [repeats]   (from the repository root)
 #include "cpu_timing.hpp"
-#include "contact_geometry/contact_tables.hpp"
-#include "profiles/profile_readers.hpp"
+#include <railstab/contact_geometry/contact_tables.hpp>
+#include <railstab/profiles/profile_readers.hpp>
 
 #include <algorithm>
 #include <cstdio>

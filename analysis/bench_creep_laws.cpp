@@ -4,10 +4,10 @@
 // 256 varied inputs) / 2^16, in ns per evaluation.
 //   build/bench_creep_laws
 #include "cpu_timing.hpp"
-#include "contact/creep/linear_kalker_creep.hpp"
-#include "contact/creep/polach_creep.hpp"
-#include "contact/creep/shen_hedrick_elkins_creep.hpp"
-#include "contact/kalker.hpp"
+#include <railstab/contact/creep/linear_kalker_creep.hpp>
+#include <railstab/contact/creep/polach_creep.hpp>
+#include <railstab/contact/creep/shen_hedrick_elkins_creep.hpp>
+#include <railstab/contact/kalker.hpp>
 
 #include <algorithm>
 #include <cstdio>

@@ -3,7 +3,7 @@
 // all eigenpairs by eigen_dense against the 12 nearest sigma = 0.5 + 5i by
 // eigen_arpack_shift_invert. Prints the time per call and dense / ARPACK.
 #include "cpu_timing.hpp"
-#include "eigen/eigen_analysis.hpp"
+#include <railstab/eigen/eigen_analysis.hpp>
 #include "eigen/synthetic_systems.hpp"  // tests/
 
 #include <algorithm>

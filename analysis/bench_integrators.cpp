@@ -11,8 +11,8 @@
 // here (work-precision study), which keeps the whole run near a minute.
 //   build/bench_integrators [cases-dir]
 #include "cpu_timing.hpp"
-#include "setup/prepare_scene.hpp"
-#include "integrate/work_precision.hpp"
+#include <railstab/setup/prepare_scene.hpp>
+#include <railstab/integrate/work_precision.hpp>
 
 #include <cmath>
 #include <cstdio>

@@ -23,15 +23,15 @@
 //     Jacobians of the thesis vehicle, likewise)
 #include "cpu_timing.hpp"
 #include "support/column_by_column_eigen.hpp"
-#include "eigen/balance.hpp"
-#include "eigen/decoupled_blocks.hpp"
-#include "eigen/eigen_analysis.hpp"
-#include "equilibrium/equilibrium.hpp"
-#include "linear/jacobian.hpp"
-#include "linear/linearization.hpp"
-#include "model/equations_of_motion.hpp"
-#include "setup/prepare_scene.hpp"
-#include "stability/speed_analysis.hpp"
+#include <railstab/eigen/balance.hpp>
+#include <railstab/eigen/decoupled_blocks.hpp>
+#include <railstab/eigen/eigen_analysis.hpp>
+#include <railstab/equilibrium/equilibrium.hpp>
+#include <railstab/linear/jacobian.hpp>
+#include <railstab/linear/linearization.hpp>
+#include <railstab/model/equations_of_motion.hpp>
+#include <railstab/setup/prepare_scene.hpp>
+#include <railstab/stability/speed_analysis.hpp>
 
 #include <algorithm>
 #include <cmath>

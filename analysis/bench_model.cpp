@@ -3,12 +3,12 @@
 // and a 20 s time-domain run. Prints timings and ratios.
 //   build/bench_model [cases-dir]
 #include "cpu_timing.hpp"
-#include "setup/prepare_scene.hpp"
-#include "integrate/integrator.hpp"
-#include "linear/jacobian.hpp"
-#include "linear/linearization.hpp"
-#include "model/equations_of_motion.hpp"
-#include "stability/speed_analysis.hpp"
+#include <railstab/setup/prepare_scene.hpp>
+#include <railstab/integrate/integrator.hpp>
+#include <railstab/linear/jacobian.hpp>
+#include <railstab/linear/linearization.hpp>
+#include <railstab/model/equations_of_motion.hpp>
+#include <railstab/stability/speed_analysis.hpp>
 
 #include <cstdio>
 #include <functional>

@@ -5,12 +5,12 @@
 // CPU time (CLOCK_PROCESS_CPUTIME_ID), 7 repeats, medians and ratios.
 //   build/bench_profile_contact [cases-dir]
 #include "cpu_timing.hpp"
-#include "eigen/eigen_analysis.hpp"
-#include "io/scene_loader.hpp"
-#include "linear/jacobian.hpp"
-#include "model/equations_of_motion.hpp"
-#include "setup/prepare_scene.hpp"
-#include "stability/speed_analysis.hpp"
+#include <railstab/eigen/eigen_analysis.hpp>
+#include <railstab/io/scene_loader.hpp>
+#include <railstab/linear/jacobian.hpp>
+#include <railstab/model/equations_of_motion.hpp>
+#include <railstab/setup/prepare_scene.hpp>
+#include <railstab/stability/speed_analysis.hpp>
 
 #include <algorithm>
 #include <cstdio>

@@ -31,16 +31,16 @@
 //                                              100 m/s, per shift, and the dense
 //                                              eigenvalues in the box for comparison
 #include "cpu_timing.hpp"
-#include "eigen/band_eigen.hpp"
-#include "eigen/eigen_analysis.hpp"
-#include "equilibrium/equilibrium.hpp"
-#include "integrate/integrator.hpp"
-#include "io/regular_file.hpp"
-#include "io/scene_loader.hpp"
-#include "linear/jacobian.hpp"
-#include "linear/linearization.hpp"
-#include "setup/prepare_scene.hpp"
-#include "stability/speed_analysis.hpp"
+#include <railstab/eigen/band_eigen.hpp>
+#include <railstab/eigen/eigen_analysis.hpp>
+#include <railstab/equilibrium/equilibrium.hpp>
+#include <railstab/integrate/integrator.hpp>
+#include <railstab/io/regular_file.hpp>
+#include <railstab/io/scene_loader.hpp>
+#include <railstab/linear/jacobian.hpp>
+#include <railstab/linear/linearization.hpp>
+#include <railstab/setup/prepare_scene.hpp>
+#include <railstab/stability/speed_analysis.hpp>
 
 #include <sys/resource.h>
 

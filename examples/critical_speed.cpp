@@ -8,8 +8,8 @@
 //
 // The defaults bracket the thesis vehicle's critical speed (cases/
 // thesis_vehicle_tangent.toml: 111.46 m/s, README) with a short grid.
-#include "setup/prepare_scene.hpp"
-#include "stability/speed_analysis.hpp"
+#include <railstab/setup/prepare_scene.hpp>
+#include <railstab/stability/speed_analysis.hpp>
 
 #include <cstdio>
 #include <cstdlib>

@@ -1,11 +1,11 @@
-// libFuzzer harness: wheel and rail profile readers (src/profiles/).
+// libFuzzer harness: wheel and rail profile readers (src/railstab/profiles/).
 //
 // The first byte picks the reader (SIMPACK .prw wheel, .prr rail, plain text
 // in mm or m); the rest is the file. Contract: a Profile, or a ProfileError
 // whose message names the file; anything else (crash, sanitizer report,
 // another exception type, a message without the file name) aborts.
 // Seed corpus: cases/profiles/*.pr?.
-#include "profiles/profile_readers.hpp"
+#include <railstab/profiles/profile_readers.hpp>
 
 #include <cstdint>
 #include <cstdio>

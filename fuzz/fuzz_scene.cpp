@@ -10,10 +10,10 @@
 //
 // Built only with clang (CMake option RAILSTAB_SANITIZE, scripts/sanitize.sh);
 // seed corpus: cases/*.toml.
-#include "equilibrium/equilibrium.hpp"
-#include "io/scene_loader.hpp"
-#include "model/equations_of_motion.hpp"
-#include "setup/build_model.hpp"
+#include <railstab/equilibrium/equilibrium.hpp>
+#include <railstab/io/scene_loader.hpp>
+#include <railstab/model/equations_of_motion.hpp>
+#include <railstab/setup/build_model.hpp>
 
 #include <cstdint>
 #include <cstdio>

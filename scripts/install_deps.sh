@@ -1,10 +1,22 @@
 #!/usr/bin/env bash
 # Install the Debian packages railstab needs (idempotent: does nothing when
 # they are all present). Run as root on Debian 12.
+#
+#   bash scripts/install_deps.sh          what the `railstab` executable needs
+#                                         (compiler, numeric libraries, gnuplot)
+#   bash scripts/install_deps.sh test     also the test suite's: GoogleTest,
+#                                         GNU parallel (the sharded-study test)
+#   bash scripts/install_deps.sh ci       also CI's sanitizer stage: clang and
+#                                         its sanitizer runtime
 set -euo pipefail
 packages=(g++ cmake make libeigen3-dev libarpack2-dev libsundials-dev libsuitesparse-dev gnuplot-nox
-          libtomlplusplus-dev libcli11-dev libgtest-dev clang libclang-rt-14-dev
-          parallel)  # GNU parallel: the sharded-study example (README "Parameter studies")
+          libtomlplusplus-dev libcli11-dev)
+case "${1:-}" in
+  "") ;;
+  test) packages+=(libgtest-dev parallel) ;;
+  ci) packages+=(libgtest-dev parallel clang libclang-rt-14-dev) ;;
+  *) echo "install_deps.sh: unknown set '$1' (expected nothing, 'test' or 'ci')" >&2; exit 2 ;;
+esac
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -38,7 +38,7 @@ echo "== test suite under ASan + UBSan (left out: $skip)" >&2
 echo "== libFuzzer: ${fuzz_seconds} s per harness" >&2
 run_fuzzer() {  # name, max input length, seed files...
   local name=$1 max_len=$2; shift 2
-  local work=$build/fuzz/$name
+  local work=$build/fuzz_runs/$name
   rm -rf "$work" && mkdir -p "$work/corpus" "$work/seeds" "$work/artifacts"
   cp "$@" "$work/seeds/"
   # -timeout: an input taking longer is a hang (a finding); -rss_limit_mb:
@@ -56,7 +56,7 @@ run_fuzzer() {  # name, max input length, seed files...
 }
 run_fuzzer scene 16384 cases/*.toml
 # Profile seeds: the first byte picks the reader (0 .prw, 1 .prr, 2 plain mm).
-seeds=$build/fuzz/profile_seeds && rm -rf $seeds && mkdir -p $seeds
+seeds=$build/fuzz_runs/profile_seeds && rm -rf $seeds && mkdir -p $seeds
 { printf '\0'; cat cases/profiles/MBench_S1002_v3.prw; } > $seeds/s1002.prw
 { printf '\1'; cat cases/profiles/MBench_UIC60_v3.prr; } > $seeds/uic60.prr
 printf '\2# y z in mm\n-30 1\n-20 0.5\n0 0\n20 -0.5\n30 -1\n' > $seeds/plain.txt

@@ -4,7 +4,11 @@
 # RAILSTAB_SANITIZE=1 bash scripts/test.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/install_deps.sh
+if [ "${CI:-}" = "true" ] || [ "${RAILSTAB_SANITIZE:-}" = "1" ]; then
+  bash scripts/install_deps.sh ci
+else
+  bash scripts/install_deps.sh test
+fi
 bash scripts/build.sh
 (cd build && ctest --output-on-failure -j2)
 if [ "${CI:-}" = "true" ] || [ "${RAILSTAB_SANITIZE:-}" = "1" ]; then

@@ -1,12 +1,12 @@
 #include "cli/check_command.hpp"
 
-#include "check/model_check.hpp"
+#include <railstab/check/model_check.hpp>
 #include "cli/numeric_flags.hpp"
 #include "cli/set_flag.hpp"
-#include "io/file_names.hpp"
-#include "io/output_set.hpp"
-#include "report/model_check_report.hpp"
-#include "setup/prepare_scene.hpp"
+#include <railstab/io/file_names.hpp>
+#include <railstab/io/output_set.hpp>
+#include <railstab/report/model_check_report.hpp>
+#include <railstab/setup/prepare_scene.hpp>
 
 #include <iostream>
 #include <memory>

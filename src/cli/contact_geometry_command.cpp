@@ -1,13 +1,13 @@
 #include "cli/contact_geometry_command.hpp"
 
-#include "contact_geometry/contact_geometry_summary.hpp"
-#include "io/gnuplot.hpp"
-#include "contact_geometry/profile_contact_geometry.hpp"
+#include <railstab/contact_geometry/contact_geometry_summary.hpp>
+#include <railstab/io/gnuplot.hpp>
+#include <railstab/contact_geometry/profile_contact_geometry.hpp>
 #include "cli/set_flag.hpp"
-#include "io/file_names.hpp"
-#include "io/output_set.hpp"
-#include "io/scene_loader.hpp"
-#include "report/contact_geometry_report.hpp"
+#include <railstab/io/file_names.hpp>
+#include <railstab/io/output_set.hpp>
+#include <railstab/io/scene_loader.hpp>
+#include <railstab/report/contact_geometry_report.hpp>
 
 #include <filesystem>
 #include <iomanip>

@@ -9,7 +9,7 @@
 #include "cli/study_command.hpp"
 #include "cli/verify_command.hpp"
 #include "cli/work_precision_command.hpp"
-#include "setup/model_error_context.hpp"
+#include <railstab/setup/model_error_context.hpp>
 
 #include <CLI/CLI.hpp>
 

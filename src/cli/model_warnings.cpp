@@ -1,7 +1,7 @@
 #include "cli/model_warnings.hpp"
 
-#include "check/model_check.hpp"
-#include "report/model_check_report.hpp"
+#include <railstab/check/model_check.hpp>
+#include <railstab/report/model_check_report.hpp>
 
 #include <exception>
 #include <iostream>

@@ -1,7 +1,7 @@
 #pragma once
 // The model check's warnings, printed (stderr) by every command that runs a
 // scene before its analysis starts.
-#include "setup/prepare_scene.hpp"
+#include <railstab/setup/prepare_scene.hpp>
 
 namespace railstab {
 

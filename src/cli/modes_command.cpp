@@ -1,15 +1,15 @@
 #include "cli/modes_command.hpp"
 
 #include "cli/model_warnings.hpp"
-#include "report/run_conditions.hpp"
+#include <railstab/report/run_conditions.hpp>
 #include "cli/numeric_flags.hpp"
 #include "cli/set_flag.hpp"
-#include "io/file_names.hpp"
-#include "io/gnuplot.hpp"
-#include "io/output_set.hpp"
-#include "report/mode_plot.hpp"
-#include "setup/prepare_scene.hpp"
-#include "stability/speed_analysis.hpp"
+#include <railstab/io/file_names.hpp>
+#include <railstab/io/gnuplot.hpp>
+#include <railstab/io/output_set.hpp>
+#include <railstab/report/mode_plot.hpp>
+#include <railstab/setup/prepare_scene.hpp>
+#include <railstab/stability/speed_analysis.hpp>
 
 #include <algorithm>
 #include <iostream>

@@ -3,13 +3,13 @@
 #include "cli/model_warnings.hpp"
 #include "cli/numeric_flags.hpp"
 #include "cli/set_flag.hpp"
-#include "io/file_names.hpp"
-#include "io/gnuplot.hpp"
-#include "io/output_set.hpp"
-#include "report/sensitivity_report.hpp"
-#include "sensitivity/parameter_derivative.hpp"
-#include "setup/prepare_scene.hpp"
-#include "stability/speed_analysis.hpp"
+#include <railstab/io/file_names.hpp>
+#include <railstab/io/gnuplot.hpp>
+#include <railstab/io/output_set.hpp>
+#include <railstab/report/sensitivity_report.hpp>
+#include <railstab/sensitivity/parameter_derivative.hpp>
+#include <railstab/setup/prepare_scene.hpp>
+#include <railstab/stability/speed_analysis.hpp>
 
 #include <algorithm>
 #include <iostream>

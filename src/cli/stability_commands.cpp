@@ -1,17 +1,17 @@
 #include "cli/stability_commands.hpp"
 
 #include "cli/model_warnings.hpp"
-#include "report/run_conditions.hpp"
+#include <railstab/report/run_conditions.hpp>
 #include "cli/numeric_flags.hpp"
 #include "cli/set_flag.hpp"
-#include "setup/prepare_scene.hpp"
-#include "io/file_names.hpp"
-#include "io/gnuplot.hpp"
-#include "io/output_set.hpp"
-#include "report/eigen_report.hpp"
-#include "report/equilibrium_report.hpp"
-#include "report/stability_report.hpp"
-#include "stability/speed_analysis.hpp"
+#include <railstab/setup/prepare_scene.hpp>
+#include <railstab/io/file_names.hpp>
+#include <railstab/io/gnuplot.hpp>
+#include <railstab/io/output_set.hpp>
+#include <railstab/report/eigen_report.hpp>
+#include <railstab/report/equilibrium_report.hpp>
+#include <railstab/report/stability_report.hpp>
+#include <railstab/stability/speed_analysis.hpp>
 
 #include <iostream>
 #include <memory>

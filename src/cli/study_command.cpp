@@ -2,13 +2,13 @@
 
 #include "cli/numeric_flags.hpp"
 #include "cli/set_flag.hpp"
-#include "io/file_names.hpp"
-#include "io/gnuplot.hpp"
-#include "io/output_set.hpp"
-#include "io/regular_file.hpp"
-#include "io/scene_loader.hpp"
-#include "report/study_report.hpp"
-#include "study/study_record.hpp"
+#include <railstab/io/file_names.hpp>
+#include <railstab/io/gnuplot.hpp>
+#include <railstab/io/output_set.hpp>
+#include <railstab/io/regular_file.hpp>
+#include <railstab/io/scene_loader.hpp>
+#include <railstab/report/study_report.hpp>
+#include <railstab/study/study_record.hpp>
 
 #include <filesystem>
 #include <iostream>

@@ -1,15 +1,15 @@
 #include "cli/verify_command.hpp"
 
 #include "cli/model_warnings.hpp"
-#include "report/run_conditions.hpp"
+#include <railstab/report/run_conditions.hpp>
 #include "cli/numeric_flags.hpp"
 #include "cli/set_flag.hpp"
-#include "setup/prepare_scene.hpp"
-#include "io/file_names.hpp"
-#include "io/gnuplot.hpp"
-#include "io/output_set.hpp"
-#include "report/verify_report.hpp"
-#include "verify/verification.hpp"
+#include <railstab/setup/prepare_scene.hpp>
+#include <railstab/io/file_names.hpp>
+#include <railstab/io/gnuplot.hpp>
+#include <railstab/io/output_set.hpp>
+#include <railstab/report/verify_report.hpp>
+#include <railstab/verify/verification.hpp>
 
 #include <iostream>
 #include <memory>

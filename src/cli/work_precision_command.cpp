@@ -3,12 +3,12 @@
 #include "cli/model_warnings.hpp"
 #include "cli/numeric_flags.hpp"
 #include "cli/set_flag.hpp"
-#include "setup/prepare_scene.hpp"
-#include "integrate/work_precision.hpp"
-#include "io/file_names.hpp"
-#include "io/gnuplot.hpp"
-#include "io/output_set.hpp"
-#include "report/work_precision_report.hpp"
+#include <railstab/setup/prepare_scene.hpp>
+#include <railstab/integrate/work_precision.hpp>
+#include <railstab/io/file_names.hpp>
+#include <railstab/io/gnuplot.hpp>
+#include <railstab/io/output_set.hpp>
+#include <railstab/report/work_precision_report.hpp>
 
 #include <iostream>
 #include <memory>

@@ -3,10 +3,10 @@
 // the yaw dampers' series stiffness says it must: a damper in series with a
 // spring k_s has the complex stiffness k_s c s / (k_s + c s), which tends to
 // the plain damper's c s as k_s -> infinity.
-#include "io/scene_loader.hpp"
-#include "model/equations_of_motion.hpp"
-#include "setup/prepare_scene.hpp"
-#include "stability/speed_analysis.hpp"
+#include <railstab/io/scene_loader.hpp>
+#include <railstab/model/equations_of_motion.hpp>
+#include <railstab/setup/prepare_scene.hpp>
+#include <railstab/stability/speed_analysis.hpp>
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // Every case scene runs; the thesis results of chapter 5 are reproduced
 // qualitatively (ERRATA 15).
-#include "setup/prepare_scene.hpp"
-#include "integrate/integrator.hpp"
+#include <railstab/setup/prepare_scene.hpp>
+#include <railstab/integrate/integrator.hpp>
 
 #include <gtest/gtest.h>
 

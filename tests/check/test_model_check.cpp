@@ -2,9 +2,9 @@
 // of the thesis vehicle (Table 5.1 masses, statically determinate preloads),
 // each warning raised by a scene with that one mistake and none raised by
 // the thesis cases.
-#include "check/model_check.hpp"
-#include "io/scene_loader.hpp"
-#include "setup/prepare_scene.hpp"
+#include <railstab/check/model_check.hpp>
+#include <railstab/io/scene_loader.hpp>
+#include <railstab/setup/prepare_scene.hpp>
 
 #include <gtest/gtest.h>
 

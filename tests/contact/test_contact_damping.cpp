@@ -1,12 +1,12 @@
 // Viscous damping of the Hertz contact (contacts.<name>.normal_damping_N_s_per_m):
 // its exact linearisation against a closed form, and AD against central
 // differences with it switched on.
-#include "setup/prepare_scene.hpp"
-#include "integrate/integrator.hpp"
-#include "linear/jacobian.hpp"
-#include "model/equations_of_motion.hpp"
-#include "stability/speed_analysis.hpp"
-#include "verify/verification.hpp"
+#include <railstab/setup/prepare_scene.hpp>
+#include <railstab/integrate/integrator.hpp>
+#include <railstab/linear/jacobian.hpp>
+#include <railstab/model/equations_of_motion.hpp>
+#include <railstab/stability/speed_analysis.hpp>
+#include <railstab/verify/verification.hpp>
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // Hertz normal contact: closed-form circle, the curvature-ratio equation,
 // consistency of the load-approach law, the seed wheel/rail case, and AD
 // derivatives against central differences.
-#include "contact/hertz.hpp"
+#include <railstab/contact/hertz.hpp>
 
 #include <gtest/gtest.h>
 

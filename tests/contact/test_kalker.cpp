@@ -1,8 +1,8 @@
 // Kalker creep coefficients: table B.1 reproduced at its nodes, smoothness of
 // the interpolation (value and slope) across every node and across a/b = 1,
 // AD derivatives, range checks, and the f_ij scaling.
-#include "contact/hertz.hpp"
-#include "contact/kalker.hpp"
+#include <railstab/contact/hertz.hpp>
+#include <railstab/contact/kalker.hpp>
 
 #include <gtest/gtest.h>
 
@@ -22,7 +22,7 @@ constexpr double kEps = std::numeric_limits<double>::epsilon();
 constexpr int kRows = 19;
 constexpr std::array<double, 3> kPoissonNodes = {0.0, 0.25, 0.5};
 
-// Table B.1 of the thesis, typed in independently of src/contact/kalker.cpp.
+// Table B.1 of the thesis, typed in independently of src/railstab/contact/kalker.cpp.
 // Columns: c11, c22, c23, c33, each for nu = 0, 0.25, 0.5.
 // Rows: a/b = 0.1..0.9, 1.0, then b/a = 0.9..0.1.
 constexpr double kTable[kRows][12] = {

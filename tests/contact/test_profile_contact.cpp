@@ -6,12 +6,12 @@
 //   lateral shifts from the tread through the tread-to-flange transition into
 //   flange contact (two-point contact included);
 // - scene errors name the contact's key and the file.
-#include "contact/wheel_rail.hpp"
-#include "equilibrium/equilibrium.hpp"
-#include "io/scene_loader.hpp"
-#include "linear/jacobian.hpp"
-#include "model/equations_of_motion.hpp"
-#include "setup/build_model.hpp"
+#include <railstab/contact/wheel_rail.hpp>
+#include <railstab/equilibrium/equilibrium.hpp>
+#include <railstab/io/scene_loader.hpp>
+#include <railstab/linear/jacobian.hpp>
+#include <railstab/model/equations_of_motion.hpp>
+#include <railstab/setup/build_model.hpp>
 
 #include "support/state_index.hpp"
 

@@ -7,11 +7,11 @@
 //   alike (mirror symmetry, 1e-6), both pushing their rails outwards (Y > 0:
 //   the coned treads' gauge-spreading force); the knife-edge vehicle has no
 //   flange and so no limit.
-#include "contact/wheel_forces.hpp"
-#include "contact_geometry/profile_contact_geometry.hpp"
-#include "equilibrium/equilibrium.hpp"
-#include "io/scene_loader.hpp"
-#include "setup/build_model.hpp"
+#include <railstab/contact/wheel_forces.hpp>
+#include <railstab/contact_geometry/profile_contact_geometry.hpp>
+#include <railstab/equilibrium/equilibrium.hpp>
+#include <railstab/io/scene_loader.hpp>
+#include <railstab/setup/build_model.hpp>
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // Wheel-rail contact of one wheel: zero force without penetration, creep
 // forces that dissipate, and the knife-edge geometry at the centred position.
-#include "contact/wheel_rail.hpp"
-#include "model/model.hpp"
+#include <railstab/contact/wheel_rail.hpp>
+#include <railstab/model/model.hpp>
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 #pragma once
 // Analytic wheel and rail profiles for closed-form checks of the contact
 // geometry (profile frame of profiles/profile.hpp: y outward, z up, metres).
-#include "profiles/profile_pair.hpp"
-#include "profiles/profile_validation.hpp"
+#include <railstab/profiles/profile_pair.hpp>
+#include <railstab/profiles/profile_validation.hpp>
 
 #include <cmath>
 #include <functional>

@@ -3,10 +3,10 @@
 // wheel on a circular rail (internal tangency of two circles), symmetry of a
 // symmetric pair, and the S1002/UIC60 1:40 flange contact of the Manchester
 // benchmark.
-#include "contact_geometry/characteristic_functions.hpp"
-#include "contact_geometry/wheelset_pose.hpp"
+#include <railstab/contact_geometry/characteristic_functions.hpp>
+#include <railstab/contact_geometry/wheelset_pose.hpp>
 #include "contact_geometry/synthetic_profiles.hpp"
-#include "profiles/profile_readers.hpp"
+#include <railstab/profiles/profile_readers.hpp>
 
 #include <Eigen/Dense>
 #include <gtest/gtest.h>

@@ -2,10 +2,10 @@
 // stated per region), C1 continuity across cells, and AD derivatives of the
 // table evaluation against central differences, across the tread-to-flange
 // transition of S1002/UIC60.
-#include "contact_geometry/contact_tables.hpp"
+#include <railstab/contact_geometry/contact_tables.hpp>
 #include "contact_geometry/synthetic_profiles.hpp"
-#include "core/scalar.hpp"
-#include "profiles/profile_readers.hpp"
+#include <railstab/core/scalar.hpp>
+#include <railstab/profiles/profile_readers.hpp>
 
 #include <gtest/gtest.h>
 

@@ -1,9 +1,9 @@
 // EN 15302 equivalent conicity by Klingel integration.
-#include "contact_geometry/characteristic_functions.hpp"
-#include "contact_geometry/contact_geometry_summary.hpp"
-#include "contact_geometry/equivalent_conicity.hpp"
+#include <railstab/contact_geometry/characteristic_functions.hpp>
+#include <railstab/contact_geometry/contact_geometry_summary.hpp>
+#include <railstab/contact_geometry/equivalent_conicity.hpp>
 #include "contact_geometry/synthetic_profiles.hpp"
-#include "profiles/profile_readers.hpp"
+#include <railstab/profiles/profile_readers.hpp>
 
 #include <gtest/gtest.h>
 

@@ -11,10 +11,10 @@
 //    the unbalanced QR misses it by more than 1e-7;
 //  - on the thesis vehicle's state matrix every eigenpair's residual
 //    against A stays at round-off.
-#include "eigen/balance.hpp"
-#include "eigen/eigen_analysis.hpp"
-#include "linear/linearization.hpp"
-#include "setup/prepare_scene.hpp"
+#include <railstab/eigen/balance.hpp>
+#include <railstab/eigen/eigen_analysis.hpp>
+#include <railstab/linear/linearization.hpp>
+#include <railstab/setup/prepare_scene.hpp>
 
 #include <gtest/gtest.h>
 

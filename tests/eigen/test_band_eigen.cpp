@@ -13,9 +13,9 @@
 //    matrix (Schur vectors are not eigenvectors there) and on one so small
 //    that the Krylov basis fills the whole space (an invariant subspace is
 //    reached): the k nearest known eigenvalues, nothing else.
-#include "eigen/band_eigen.hpp"
-#include "setup/prepare_scene.hpp"
-#include "stability/speed_analysis.hpp"
+#include <railstab/eigen/band_eigen.hpp>
+#include <railstab/setup/prepare_scene.hpp>
+#include <railstab/stability/speed_analysis.hpp>
 #include "support/known_spectrum.hpp"
 
 #include <gtest/gtest.h>

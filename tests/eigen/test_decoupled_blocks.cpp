@@ -15,12 +15,12 @@
 //    max(1, |lambda|) (the whole QR's backward error n u ||B||_F is ~8e-11
 //    1/s; measured 1.4e-13), with residuals against the whole A below 1e-13
 //    and every eigenvector on one block.
-#include "eigen/balance.hpp"
-#include "eigen/decoupled_blocks.hpp"
-#include "eigen/eigen_analysis.hpp"
+#include <railstab/eigen/balance.hpp>
+#include <railstab/eigen/decoupled_blocks.hpp>
+#include <railstab/eigen/eigen_analysis.hpp>
 #include "eigen/synthetic_systems.hpp"
-#include "linear/linearization.hpp"
-#include "setup/prepare_scene.hpp"
+#include <railstab/linear/linearization.hpp>
+#include <railstab/setup/prepare_scene.hpp>
 
 #include <gtest/gtest.h>
 

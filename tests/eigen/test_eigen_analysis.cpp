@@ -1,6 +1,6 @@
 // Eigen analysis: dense against closed forms, ARPACK shift-invert against
 // dense, modal quantities, and mode tracking through a frequency crossing.
-#include "eigen/eigen_analysis.hpp"
+#include <railstab/eigen/eigen_analysis.hpp>
 #include "eigen/synthetic_systems.hpp"
 
 #include <gtest/gtest.h>

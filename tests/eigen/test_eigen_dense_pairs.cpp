@@ -11,10 +11,10 @@
 // from A), on the coach's state matrix (82 states; unlike the thesis
 // vehicle's it does not decouple into blocks, so eigen_dense runs one QR on
 // all of it, as the reference does) and on a synthetic damped system.
-#include "eigen/eigen_analysis.hpp"
+#include <railstab/eigen/eigen_analysis.hpp>
 #include "eigen/synthetic_systems.hpp"
-#include "linear/linearization.hpp"
-#include "setup/prepare_scene.hpp"
+#include <railstab/linear/linearization.hpp>
+#include <railstab/setup/prepare_scene.hpp>
 
 #include "support/column_by_column_eigen.hpp"
 

@@ -9,11 +9,11 @@
 //  - traction_rod: stiffness k along its line, only second order across it;
 //  - line_spring_damper with a table: passes through the table points,
 //    continues linearly, its potential is the integral of its force.
-#include "eigen/eigen_analysis.hpp"
-#include "equilibrium/equilibrium.hpp"
+#include <railstab/eigen/eigen_analysis.hpp>
+#include <railstab/equilibrium/equilibrium.hpp>
 #include "integrate/integration_scenes.hpp"
-#include "linear/linearization.hpp"
-#include "setup/build_model.hpp"
+#include <railstab/linear/linearization.hpp>
+#include <railstab/setup/build_model.hpp>
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 // Force elements: springs conservative, dampers dissipate exactly
 // -dd/dt^T C dd/dt, forces and moments equal and opposite (Drake's
 // LinearSpringDamper test, Chrono's ValidateEnergy).
-#include "elements/element.hpp"
-#include "scene/scene_spec.hpp"
+#include <railstab/elements/element.hpp>
+#include <railstab/scene/scene_spec.hpp>
 
 #include <gtest/gtest.h>
 

@@ -8,11 +8,11 @@
 // What each scene stresses and expects, and where its numbers come from, is
 // in the header of its case file. Run time of this file: about 8 s on one
 // core, 5 s of it the 60 s conservative run (each test prints its times).
-#include "setup/prepare_scene.hpp"
-#include "integrate/integrator.hpp"
-#include "model/energy.hpp"
-#include "model/equations_of_motion.hpp"
-#include "stability/speed_analysis.hpp"
+#include <railstab/setup/prepare_scene.hpp>
+#include <railstab/integrate/integrator.hpp>
+#include <railstab/model/energy.hpp>
+#include <railstab/model/equations_of_motion.hpp>
+#include <railstab/stability/speed_analysis.hpp>
 
 #include <gtest/gtest.h>
 
@@ -270,7 +270,7 @@ TEST_P(ExtremeRun, CompletesFiniteOrStopsNamingTheCause) {
     GTEST_SKIP() << "known failure: " << contact.first_loss << " wheel lost contact (first seen"
                  << " at output t = " << contact.first_loss_s
                  << " s) but integrate() reports no contact loss (no lift-off events in "
-                    "src/integrate/integrator.cpp yet)";
+                    "src/railstab/integrate/integrator.cpp yet)";
   ASSERT_FALSE(reported.empty()) << c.name << ": " << contact.first_loss
                                  << " wheel lost contact (seen at output t = "
                                  << contact.first_loss_s << " s) and nothing reported it";

@@ -6,11 +6,11 @@
 // rails.
 #include <gtest/gtest.h>
 
-#include "io/scene_loader.hpp"
-#include "model/equations_of_motion.hpp"
-#include "setup/model_error_context.hpp"
-#include "setup/prepare_scene.hpp"
-#include "stability/speed_analysis.hpp"
+#include <railstab/io/scene_loader.hpp>
+#include <railstab/model/equations_of_motion.hpp>
+#include <railstab/setup/model_error_context.hpp>
+#include <railstab/setup/prepare_scene.hpp>
+#include <railstab/stability/speed_analysis.hpp>
 
 #include <fstream>
 #include <sstream>

@@ -5,9 +5,9 @@
 // the key; e0 and D must agree; --arc-length is blamed on the flag.
 #include <gtest/gtest.h>
 
-#include "io/scene_loader.hpp"
-#include "scene/physical_ranges.hpp"
-#include "setup/prepare_scene.hpp"
+#include <railstab/io/scene_loader.hpp>
+#include <railstab/scene/physical_ranges.hpp>
+#include <railstab/setup/prepare_scene.hpp>
 
 #include <filesystem>
 #include <fstream>

@@ -1,7 +1,7 @@
 #pragma once
 // Scenes built in code for the integrator tests.
 #include "model/scene_builders.hpp"
-#include "scene/scene_spec.hpp"
+#include <railstab/scene/scene_spec.hpp>
 
 #include <cmath>
 #include <numbers>

@@ -1,9 +1,9 @@
 // The a posteriori error estimate that every `simulate` run reports (the same
 // run at 100x tighter tolerances) against the true error (a reference at
 // rtol 1e-10 with a different method).
-#include "setup/prepare_scene.hpp"
-#include "integrate/error_estimate.hpp"
-#include "integrate/work_precision.hpp"
+#include <railstab/setup/prepare_scene.hpp>
+#include <railstab/integrate/error_estimate.hpp>
+#include <railstab/integrate/work_precision.hpp>
 
 #include <gtest/gtest.h>
 

@@ -4,10 +4,10 @@
 // simulating one output interval.
 #include <gtest/gtest.h>
 
-#include "equilibrium/equilibrium.hpp"
-#include "integrate/integrator.hpp"
-#include "setup/build_model.hpp"
-#include "model/model.hpp"
+#include <railstab/equilibrium/equilibrium.hpp>
+#include <railstab/integrate/integrator.hpp>
+#include <railstab/setup/build_model.hpp>
+#include <railstab/model/model.hpp>
 #include "model/scene_builders.hpp"
 
 #include <cmath>

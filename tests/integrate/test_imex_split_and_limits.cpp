@@ -1,11 +1,11 @@
 // The IMEX split adds up to the model, and puts the stiffness on the
 // implicit side; work limits end a run with IntegrationGaveUp.
-#include "setup/prepare_scene.hpp"
+#include <railstab/setup/prepare_scene.hpp>
 #include "integrate/integration_scenes.hpp"
-#include "integrate/integrator.hpp"
-#include "integrate/model_callbacks.hpp"
-#include "linear/jacobian.hpp"
-#include "model/equations_of_motion.hpp"
+#include <railstab/integrate/integrator.hpp>
+#include <railstab/integrate/model_callbacks.hpp>
+#include <railstab/linear/jacobian.hpp>
+#include <railstab/model/equations_of_motion.hpp>
 
 #include <gtest/gtest.h>
 

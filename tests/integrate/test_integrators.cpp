@@ -1,11 +1,11 @@
 // Every integrator reproduces the closed-form free response of a damped and
 // an undamped single-degree-of-freedom oscillator built from the model's own
 // bodies and springs, to an accuracy consistent with its tolerance.
-#include "equilibrium/equilibrium.hpp"
-#include "setup/build_model.hpp"
-#include "integrate/integrator.hpp"
+#include <railstab/equilibrium/equilibrium.hpp>
+#include <railstab/setup/build_model.hpp>
+#include <railstab/integrate/integrator.hpp>
 #include "integrate/integration_scenes.hpp"
-#include "integrate/work_precision.hpp"
+#include <railstab/integrate/work_precision.hpp>
 
 #include <gtest/gtest.h>
 

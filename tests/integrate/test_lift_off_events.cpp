@@ -1,12 +1,12 @@
 // Wheel lift-off and touch-down are events, not errors: every integrator
 // records them at the time the penetration crosses zero, goes on through
 // them, and stops at the first one only on request.
-#include "equilibrium/equilibrium.hpp"
-#include "setup/build_model.hpp"
-#include "equilibrium/equilibrium.hpp"
+#include <railstab/equilibrium/equilibrium.hpp>
+#include <railstab/setup/build_model.hpp>
+#include <railstab/equilibrium/equilibrium.hpp>
 #include "integrate/integration_scenes.hpp"
-#include "integrate/integrator.hpp"
-#include "model/equations_of_motion.hpp"
+#include <railstab/integrate/integrator.hpp>
+#include <railstab/model/equations_of_motion.hpp>
 
 #include <gtest/gtest.h>
 

@@ -7,13 +7,13 @@
 //    integrator's own error (the same Newton systems, solved by another LU):
 //    the thesis vehicle (ARKODE SDIRK and CVODE BDF order 2) and the four-car
 //    train; and the callback fills the matrix with the AD Jacobian bit for bit.
-#include "integrate/integrator.hpp"
-#include "integrate/sparse_newton.hpp"
-#include "linear/jacobian.hpp"
-#include "setup/prepare_scene.hpp"
+#include <railstab/integrate/integrator.hpp>
+#include <railstab/integrate/sparse_newton.hpp>
+#include <railstab/linear/jacobian.hpp>
+#include <railstab/setup/prepare_scene.hpp>
 
-#include "integrate/model_callbacks.hpp"
-#include "integrate/root_functions.hpp"
+#include <railstab/integrate/model_callbacks.hpp>
+#include <railstab/integrate/root_functions.hpp>
 
 #include <sundials/sundials_context.h>
 #include <sunmatrix/sunmatrix_sparse.h>

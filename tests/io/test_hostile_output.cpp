@@ -5,17 +5,17 @@
 // its plots are checked; a scene path that is not a regular file is refused.
 #include <gtest/gtest.h>
 
-#include "io/csv.hpp"
-#include "io/file_names.hpp"
-#include "io/gnuplot.hpp"
-#include "io/json_writer.hpp"
-#include "io/output_files.hpp"
-#include "io/output_set.hpp"
-#include "io/regular_file.hpp"
-#include "io/scene_loader.hpp"
-#include "model/model.hpp"
-#include "setup/build_model.hpp"
-#include "integrate/integrator.hpp"
+#include <railstab/io/csv.hpp>
+#include <railstab/io/file_names.hpp>
+#include <railstab/io/gnuplot.hpp>
+#include <railstab/io/json_writer.hpp>
+#include <railstab/io/output_files.hpp>
+#include <railstab/io/output_set.hpp>
+#include <railstab/io/regular_file.hpp>
+#include <railstab/io/scene_loader.hpp>
+#include <railstab/model/model.hpp>
+#include <railstab/setup/build_model.hpp>
+#include <railstab/integrate/integrator.hpp>
 #include "io/format_checks.hpp"
 #include "model/scene_builders.hpp"
 

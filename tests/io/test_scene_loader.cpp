@@ -8,7 +8,7 @@
 #include <map>
 #include <string>
 
-#include "io/scene_loader.hpp"
+#include <railstab/io/scene_loader.hpp>
 
 using namespace railstab;
 

@@ -5,12 +5,12 @@
 // message naming the flag, the key and what is wrong.
 #include <gtest/gtest.h>
 
-#include "io/regular_file.hpp"
-#include "io/scene_loader.hpp"
-#include "io/scene_set_values.hpp"
-#include "sensitivity/parameter_derivative.hpp"
-#include "setup/prepare_scene.hpp"
-#include "stability/speed_analysis.hpp"
+#include <railstab/io/regular_file.hpp>
+#include <railstab/io/scene_loader.hpp>
+#include <railstab/io/scene_set_values.hpp>
+#include <railstab/sensitivity/parameter_derivative.hpp>
+#include <railstab/setup/prepare_scene.hpp>
+#include <railstab/stability/speed_analysis.hpp>
 
 #include <filesystem>
 #include <fstream>

@@ -1,5 +1,5 @@
 // The AD scalar differentiates a known function exactly (to round-off).
-#include "core/scalar.hpp"
+#include <railstab/core/scalar.hpp>
 
 #include <gtest/gtest.h>
 

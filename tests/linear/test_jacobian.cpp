@@ -1,6 +1,6 @@
 // The AD Jacobian equals central differences on every shipped scene.
-#include "setup/prepare_scene.hpp"
-#include "linear/jacobian.hpp"
+#include <railstab/setup/prepare_scene.hpp>
+#include <railstab/linear/jacobian.hpp>
 
 #include <gtest/gtest.h>
 

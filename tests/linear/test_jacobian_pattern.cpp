@@ -8,12 +8,12 @@
 //    for chosen rows and columns (the equilibrium's);
 //  - the greedy colouring is valid and optimal on patterns whose chromatic
 //    number is known (diagonal, tridiagonal, full, arrow).
-#include "linear/jacobian.hpp"
-#include "linear/jacobian_pattern.hpp"
-#include "equilibrium/equilibrium.hpp"
-#include "linear/linearization.hpp"
+#include <railstab/linear/jacobian.hpp>
+#include <railstab/linear/jacobian_pattern.hpp>
+#include <railstab/equilibrium/equilibrium.hpp>
+#include <railstab/linear/linearization.hpp>
 #include "model/scene_builders.hpp"
-#include "setup/prepare_scene.hpp"
+#include <railstab/setup/prepare_scene.hpp>
 
 #include "support/state_index.hpp"
 

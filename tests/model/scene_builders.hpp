@@ -1,6 +1,6 @@
 #pragma once
 // Small scenes built in code (independent of the TOML loader) for model tests.
-#include "scene/scene_spec.hpp"
+#include <railstab/scene/scene_spec.hpp>
 
 namespace railstab::test {
 

@@ -1,10 +1,10 @@
 // Invariants of the rigid-body equations in moving track frames.
-#include "equilibrium/equilibrium.hpp"
-#include "setup/build_model.hpp"
-#include "integrate/integrator.hpp"
-#include "kinematics/body_motion.hpp"
-#include "model/energy.hpp"
-#include "model/equations_of_motion.hpp"
+#include <railstab/equilibrium/equilibrium.hpp>
+#include <railstab/setup/build_model.hpp>
+#include <railstab/integrate/integrator.hpp>
+#include <railstab/kinematics/body_motion.hpp>
+#include <railstab/model/energy.hpp>
+#include <railstab/model/equations_of_motion.hpp>
 #include "model/scene_builders.hpp"
 
 #include <gtest/gtest.h>

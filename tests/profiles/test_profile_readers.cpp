@@ -1,10 +1,10 @@
 // Profile readers and validation: the benchmark SIMPACK files read into the
 // documented frame, and every kind of bad input gets an error naming the
 // file, the line where relevant and what was expected.
-#include "contact_geometry/rigid_contact.hpp"
-#include "contact_geometry/profile_contact_geometry.hpp"
-#include "io/scene_loader.hpp"
-#include "profiles/profile_readers.hpp"
+#include <railstab/contact_geometry/rigid_contact.hpp>
+#include <railstab/contact_geometry/profile_contact_geometry.hpp>
+#include <railstab/io/scene_loader.hpp>
+#include <railstab/profiles/profile_readers.hpp>
 
 #include <gtest/gtest.h>
 #include <unistd.h>

@@ -22,10 +22,10 @@
 //    variants fail on that until the solve is fixed (e.g. an explicit
 //    1x1/2x2/3x3 inverse); the TinyOffset variants show that it is the only
 //    difference from the closed form.
-#include "setup/prepare_scene.hpp"
-#include "stability/speed_analysis.hpp"
-#include "linear/jacobian.hpp"
-#include "model/equations_of_motion.hpp"
+#include <railstab/setup/prepare_scene.hpp>
+#include <railstab/stability/speed_analysis.hpp>
+#include <railstab/linear/jacobian.hpp>
+#include <railstab/model/equations_of_motion.hpp>
 #include "reference/textbook_models.hpp"
 
 #include <gtest/gtest.h>

@@ -103,7 +103,7 @@
 // Shipped scenes: textbook_wheelset V_crit = 73.10524 m/s, w = 39.49116 rad/s
 // (6.28521 Hz); textbook_bogie V_crit = 102.45983 m/s, w = 32.60823 rad/s
 // (5.18976 Hz).
-#include "scene/scene_spec.hpp"
+#include <railstab/scene/scene_spec.hpp>
 
 #include <Eigen/Dense>
 

@@ -5,9 +5,9 @@
 #include <gtest/gtest.h>
 
 #include "cli/run_cli.hpp"
-#include "io/gnuplot.hpp"
-#include "report/mode_plot.hpp"
-#include "setup/prepare_scene.hpp"
+#include <railstab/io/gnuplot.hpp>
+#include <railstab/report/mode_plot.hpp>
+#include <railstab/setup/prepare_scene.hpp>
 
 #include <filesystem>
 #include <fstream>

@@ -6,11 +6,11 @@
 //   tangent run's are not overwritten), and the JSON and the Markdown state
 //   the same track, cant deficiency, scene hash, version and critical speed.
 #include "cli/run_cli.hpp"
-#include "io/scene_loader.hpp"
-#include "io/sha256.hpp"
-#include "report/run_conditions.hpp"
-#include "setup/build_model.hpp"
-#include "setup/prepare_scene.hpp"
+#include <railstab/io/scene_loader.hpp>
+#include <railstab/io/sha256.hpp>
+#include <railstab/report/run_conditions.hpp>
+#include <railstab/setup/build_model.hpp>
+#include <railstab/setup/prepare_scene.hpp>
 
 #include <gtest/gtest.h>
 

@@ -7,11 +7,11 @@
 #include <gtest/gtest.h>
 
 #include "io/format_checks.hpp"
-#include "io/gnuplot.hpp"
-#include "io/output_set.hpp"
-#include "report/stability_report.hpp"
-#include "setup/prepare_scene.hpp"
-#include "stability/speed_analysis.hpp"
+#include <railstab/io/gnuplot.hpp>
+#include <railstab/io/output_set.hpp>
+#include <railstab/report/stability_report.hpp>
+#include <railstab/setup/prepare_scene.hpp>
+#include <railstab/stability/speed_analysis.hpp>
 
 #include <filesystem>
 #include <fstream>

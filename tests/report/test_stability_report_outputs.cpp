@@ -5,12 +5,12 @@
 // included, and a hostile scene name still gives valid JSON and CSV.
 #include <gtest/gtest.h>
 
-#include "setup/prepare_scene.hpp"
+#include <railstab/setup/prepare_scene.hpp>
 #include "io/format_checks.hpp"
-#include "io/gnuplot.hpp"
-#include "io/output_set.hpp"
-#include "report/stability_report.hpp"
-#include "stability/speed_analysis.hpp"
+#include <railstab/io/gnuplot.hpp>
+#include <railstab/io/output_set.hpp>
+#include <railstab/report/stability_report.hpp>
+#include <railstab/stability/speed_analysis.hpp>
 
 #include <filesystem>
 #include <fstream>

@@ -9,13 +9,13 @@
 //  - bad [train] input is refused naming the key.
 // The Jacobian pattern of the train against dense AD, bit for bit, is in
 // tests/linear/test_jacobian_pattern.cpp (every scene in cases/).
-#include "eigen/eigen_analysis.hpp"
-#include "io/regular_file.hpp"
-#include "io/scene_loader.hpp"
-#include "linear/linearization.hpp"
-#include "scene/train.hpp"
-#include "setup/prepare_scene.hpp"
-#include "stability/speed_analysis.hpp"
+#include <railstab/eigen/eigen_analysis.hpp>
+#include <railstab/io/regular_file.hpp>
+#include <railstab/io/scene_loader.hpp>
+#include <railstab/linear/linearization.hpp>
+#include <railstab/scene/train.hpp>
+#include <railstab/setup/prepare_scene.hpp>
+#include <railstab/stability/speed_analysis.hpp>
 
 #include <gtest/gtest.h>
 

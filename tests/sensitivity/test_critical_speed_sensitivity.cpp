@@ -3,10 +3,10 @@
 // itself (each side a full critical-speed search bisected to 1e-9 m/s).
 #include <gtest/gtest.h>
 
-#include "sensitivity/critical_speed_sensitivity.hpp"
-#include "sensitivity/parameter_derivative.hpp"
-#include "setup/prepare_scene.hpp"
-#include "stability/speed_analysis.hpp"
+#include <railstab/sensitivity/critical_speed_sensitivity.hpp>
+#include <railstab/sensitivity/parameter_derivative.hpp>
+#include <railstab/setup/prepare_scene.hpp>
+#include <railstab/stability/speed_analysis.hpp>
 
 #include <cmath>
 

@@ -6,13 +6,13 @@
 // damping (enters A directly), a primary longitudinal stiffness (moves the
 // hunting mode most) and the car-body mass (moves the preloads and the
 // equilibrium: the implicit-function terms).
-#include "eigen/eigen_analysis.hpp"
-#include "equilibrium/equilibrium.hpp"
-#include "io/scene_loader.hpp"
-#include "linear/linearization.hpp"
-#include "sensitivity/parameter_derivative.hpp"
-#include "setup/build_model.hpp"
-#include "stability/modes.hpp"
+#include <railstab/eigen/eigen_analysis.hpp>
+#include <railstab/equilibrium/equilibrium.hpp>
+#include <railstab/io/scene_loader.hpp>
+#include <railstab/linear/linearization.hpp>
+#include <railstab/sensitivity/parameter_derivative.hpp>
+#include <railstab/setup/build_model.hpp>
+#include <railstab/stability/modes.hpp>
 
 #include <gtest/gtest.h>
 

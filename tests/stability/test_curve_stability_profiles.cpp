@@ -9,10 +9,10 @@
 //   state (the branch followed from below ends; the steady state found above
 //   is a saddle), which must be reported as such, not as a crossing with the
 //   stable side's least stable mode.
-#include "setup/prepare_scene.hpp"
-#include "stability/loss_of_stability.hpp"
-#include "stability/speed_analysis.hpp"
-#include "verify/verification.hpp"
+#include <railstab/setup/prepare_scene.hpp>
+#include <railstab/stability/loss_of_stability.hpp>
+#include <railstab/stability/speed_analysis.hpp>
+#include <railstab/verify/verification.hpp>
 
 #include <gtest/gtest.h>
 

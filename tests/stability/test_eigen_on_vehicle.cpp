@@ -1,7 +1,7 @@
 // Dense and ARPACK eigen-solvers agree on the thesis vehicle; the critical
 // speeds of the thesis scenes are consistent with the time domain.
-#include "setup/prepare_scene.hpp"
-#include "stability/speed_analysis.hpp"
+#include <railstab/setup/prepare_scene.hpp>
+#include <railstab/stability/speed_analysis.hpp>
 
 #include <gtest/gtest.h>
 

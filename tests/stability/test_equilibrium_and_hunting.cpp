@@ -1,10 +1,10 @@
 // Equilibria (steady rolling, steady curving) and the kinematic limit of the
 // linearised knife-edge wheelset.
-#include "setup/prepare_scene.hpp"
-#include "equilibrium/equilibrium.hpp"
-#include "model/equations_of_motion.hpp"
+#include <railstab/setup/prepare_scene.hpp>
+#include <railstab/equilibrium/equilibrium.hpp>
+#include <railstab/model/equations_of_motion.hpp>
 #include "model/scene_builders.hpp"
-#include "stability/speed_analysis.hpp"
+#include <railstab/stability/speed_analysis.hpp>
 
 #include <gtest/gtest.h>
 

@@ -3,10 +3,10 @@
 // keeps its name over the grid and at the bisection point, body roles come
 // from the topology; the damping-ratio criterion is bisected like the real
 // part and lies below the critical speed.
-#include "report/mode_shape_report.hpp"
-#include "setup/prepare_scene.hpp"
-#include "stability/mode_names.hpp"
-#include "stability/speed_analysis.hpp"
+#include <railstab/report/mode_shape_report.hpp>
+#include <railstab/setup/prepare_scene.hpp>
+#include <railstab/stability/mode_names.hpp>
+#include <railstab/stability/speed_analysis.hpp>
 
 #include <gtest/gtest.h>
 

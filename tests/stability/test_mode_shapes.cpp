@@ -5,15 +5,15 @@
 // the roll centre of the hand-derived eigenvectors).
 #include <gtest/gtest.h>
 
-#include "eigen/eigen_analysis.hpp"
-#include "equilibrium/equilibrium.hpp"
-#include "linear/linearization.hpp"
+#include <railstab/eigen/eigen_analysis.hpp>
+#include <railstab/equilibrium/equilibrium.hpp>
+#include <railstab/linear/linearization.hpp>
 #include "model/scene_builders.hpp"
-#include "setup/build_model.hpp"
-#include "stability/mode_names.hpp"
-#include "stability/mode_shape.hpp"
-#include "stability/modes.hpp"
-#include "setup/prepare_scene.hpp"
+#include <railstab/setup/build_model.hpp>
+#include <railstab/stability/mode_names.hpp>
+#include <railstab/stability/mode_shape.hpp>
+#include <railstab/stability/modes.hpp>
+#include <railstab/setup/prepare_scene.hpp>
 
 #include <algorithm>
 #include <cmath>

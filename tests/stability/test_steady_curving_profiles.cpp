@@ -8,14 +8,14 @@
 //   = M g) and give the centripetal force M V^2 / R towards the curve centre;
 // - the steady state is the one the vehicle reaches when it runs into the
 //   curve: a time simulation from the end of the transition settles on it.
-#include "contact/wheel_forces.hpp"
-#include "equilibrium/equilibrium.hpp"
-#include "integrate/integrator.hpp"
-#include "io/scene_loader.hpp"
-#include "model/equations_of_motion.hpp"
-#include "model/workspace.hpp"
-#include "setup/build_model.hpp"
-#include "setup/prepare_scene.hpp"
+#include <railstab/contact/wheel_forces.hpp>
+#include <railstab/equilibrium/equilibrium.hpp>
+#include <railstab/integrate/integrator.hpp>
+#include <railstab/io/scene_loader.hpp>
+#include <railstab/model/equations_of_motion.hpp>
+#include <railstab/model/workspace.hpp>
+#include <railstab/setup/build_model.hpp>
+#include <railstab/setup/prepare_scene.hpp>
 
 #include "support/state_index.hpp"
 

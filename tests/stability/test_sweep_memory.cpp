@@ -1,8 +1,8 @@
 // A critical-speed search keeps what its results and reports read (modes,
 // eigenvectors, the linear model's state names) but not the state matrix of
 // each point: memory per grid point bounded (issue 11).
-#include "setup/prepare_scene.hpp"
-#include "stability/speed_analysis.hpp"
+#include <railstab/setup/prepare_scene.hpp>
+#include <railstab/stability/speed_analysis.hpp>
 
 #include <gtest/gtest.h>
 

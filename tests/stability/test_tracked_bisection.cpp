@@ -11,9 +11,9 @@
 //    point at the critical speed a full solve;
 //  - the points after the grid start their band solves from the bracket's
 //    discs and find the same modes as a solve from nothing.
-#include "eigen/band_eigen.hpp"
-#include "setup/prepare_scene.hpp"
-#include "stability/speed_analysis.hpp"
+#include <railstab/eigen/band_eigen.hpp>
+#include <railstab/setup/prepare_scene.hpp>
+#include <railstab/stability/speed_analysis.hpp>
 #include "support/known_spectrum.hpp"
 
 #include <gtest/gtest.h>

@@ -3,7 +3,7 @@
 // combinations, and malformed input is refused with what is wrong.
 #include <gtest/gtest.h>
 
-#include "study/study_definition.hpp"
+#include <railstab/study/study_definition.hpp>
 
 #include <set>
 

@@ -4,10 +4,10 @@
 // records of shards merge into the whole study.
 #include <gtest/gtest.h>
 
-#include "setup/prepare_scene.hpp"
-#include "stability/speed_analysis.hpp"
-#include "study/study_record.hpp"
-#include "study/study_run.hpp"
+#include <railstab/setup/prepare_scene.hpp>
+#include <railstab/stability/speed_analysis.hpp>
+#include <railstab/study/study_record.hpp>
+#include <railstab/study/study_run.hpp>
 
 #include <fstream>
 #include <sstream>

@@ -5,8 +5,8 @@
 // faster version must match bit for bit (tests/eigen/test_eigen_dense_pairs.cpp)
 // and the baseline of its timing (analysis/bench_jacobian.cpp, which also
 // asks for the old cost: the eigenvector matrix rebuilt per column).
-#include "eigen/balance.hpp"
-#include "eigen/eigen_analysis.hpp"
+#include <railstab/eigen/balance.hpp>
+#include <railstab/eigen/eigen_analysis.hpp>
 
 #include <Eigen/Dense>
 

@@ -2,7 +2,7 @@
 // Index of a state by its report name (Model::state_name, e.g.
 // "wheelset1.y_m", "bogie1.yaw_rad/s", "yd_series.damper_elongation_m"); a
 // name the model does not have fails the test and gives 0.
-#include "model/model.hpp"
+#include <railstab/model/model.hpp>
 
 #include <gtest/gtest.h>
 

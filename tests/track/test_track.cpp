@@ -1,7 +1,7 @@
 // Track geometry and moving-frame kinematics (src/track), checked against
 // closed forms, the ERRATA 1 series, brute-force quadrature and finite
 // differences.
-#include "track/track.hpp"
+#include <railstab/track/track.hpp>
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // Time domain against eigenvalues on the same model, and the damped-sinusoid
 // fit against known signals.
-#include "setup/prepare_scene.hpp"
-#include "verify/verification.hpp"
+#include <railstab/setup/prepare_scene.hpp>
+#include <railstab/verify/verification.hpp>
 
 #include <gtest/gtest.h>
 

@@ -3,8 +3,8 @@
 // ellipse a = 6 mm, b = 4 mm, steel (G = 8.4e10 Pa, nu = 0.25), Kalker
 // coefficients from contact/kalker.hpp. Helpers seed AD directions on the
 // creepages and compare Jacobians.
-#include "contact/creep/creep_input.hpp"
-#include "contact/kalker.hpp"
+#include <railstab/contact/creep/creep_input.hpp>
+#include <railstab/contact/kalker.hpp>
 
 #include <algorithm>
 #include <array>

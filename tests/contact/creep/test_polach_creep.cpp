@@ -4,7 +4,7 @@
 // saturation at mu N and at A mu0 N, monotonicity without friction decrease
 // and the adhesion optimum with it, AD against central differences, parameter
 // sensitivities, bad input.
-#include "contact/creep/polach_creep.hpp"
+#include <railstab/contact/creep/polach_creep.hpp>
 #include "creep_test_contact.hpp"
 
 #include <gtest/gtest.h>

@@ -2,8 +2,8 @@
 // and the AD Jacobian at zero creepage), saturation at mu N, the
 // Johnson-Vermeulen cubic and its C2 junction at u = 3, monotonicity, AD
 // against central differences, parameter sensitivities, bad input.
-#include "contact/creep/linear_kalker_creep.hpp"
-#include "contact/creep/shen_hedrick_elkins_creep.hpp"
+#include <railstab/contact/creep/linear_kalker_creep.hpp>
+#include <railstab/contact/creep/shen_hedrick_elkins_creep.hpp>
 #include "creep_test_contact.hpp"
 
 #include <gtest/gtest.h>

@@ -1,0 +1,411 @@
+#include <railstab/check/model_check.hpp>
+
+#include <railstab/frames/rotations.hpp>
+#include <railstab/linear/jacobian.hpp>
+#include <railstab/model/equations_of_motion.hpp>
+#include <railstab/setup/build_model.hpp>
+#include <railstab/stability/speed_analysis.hpp>
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <sstream>
+#include <type_traits>
+
+namespace railstab {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+void warn(ModelCheckReport& r, const std::string& kind, const std::string& subject,
+          const std::string& message) {
+  r.warnings.push_back({kind, subject, message});
+}
+
+// --- bodies: roles, masses, inertias, placement ------------------------------------
+
+// Role of each body from the topology (ModelCheckLimits explains the ranges).
+std::vector<std::string> body_roles(const Model& model) {
+  const size_t n = model.bodies.size();
+  std::vector<bool> joined_to_wheelset(n, false);
+  for (const ElementTpl<double>& e : model.elements) {
+    const ElementEnds& ends = ends_of(e);
+    if (ends.body1 == kTrackBody) continue;
+    if (model.bodies[size_t(ends.body1)].wheelset()) joined_to_wheelset[size_t(ends.body2)] = true;
+    if (model.bodies[size_t(ends.body2)].wheelset()) joined_to_wheelset[size_t(ends.body1)] = true;
+  }
+  std::vector<std::string> role(n, "rigid body");
+  for (size_t b = 0; b < n; ++b) {
+    if (model.bodies[b].wheelset()) role[b] = "wheelset";
+    else if (joined_to_wheelset[b]) role[b] = "bogie frame";
+  }
+  for (const ElementTpl<double>& e : model.elements) {
+    const ElementEnds& ends = ends_of(e);
+    if (ends.body1 == kTrackBody) continue;
+    for (const auto& [a, b] : {std::pair{ends.body1, ends.body2}, std::pair{ends.body2, ends.body1}})
+      if (role[size_t(a)] == "bogie frame" && role[size_t(b)] == "rigid body")
+        role[size_t(b)] = "car body";
+  }
+  return role;
+}
+
+void check_bodies(const SceneSpec& spec, const Model& model, const ModelCheckLimits& L,
+                  ModelCheckReport& r) {
+  const std::vector<std::string> roles = body_roles(model);
+  for (size_t b = 0; b < model.bodies.size(); ++b) {
+    const BodySpec& body = spec.bodies[b];
+    const std::string& role = roles[b];
+    const double m = body.mass_kg;
+    r.bodies.push_back({body.name, role, m});
+    r.total_mass_kg += m;
+
+    double lo = L.other_body_mass_min_kg, hi = L.other_body_mass_max_kg;
+    if (role == "wheelset") lo = L.wheelset_mass_min_kg, hi = L.wheelset_mass_max_kg;
+    else if (role == "bogie frame") lo = L.bogie_frame_mass_min_kg, hi = L.bogie_frame_mass_max_kg;
+    else if (role == "car body") lo = L.car_body_mass_min_kg, hi = L.car_body_mass_max_kg;
+    if (m < lo || m > hi) {
+      const bool tonnes = m < lo && m * 1000.0 >= lo && m * 1000.0 <= hi;
+      std::ostringstream msg;
+      msg << body.name << " (" << role << "): mass_kg = " << m << " is outside " << lo << " - "
+          << hi << " kg, the range of a railway " << role;
+      if (tonnes) msg << "; it looks like tonnes (" << m * 1000.0 << " kg?)";
+      warn(r, tonnes ? "unit_looks_wrong" : "body_mass_out_of_range", body.name, msg.str());
+    }
+    static const char* axes[3] = {"x (roll)", "y (pitch)", "z (yaw)"};
+    for (int i = 0; i < 3 && m > 0.0; ++i) {
+      const double J = body.inertia_kg_m2(i);
+      const double radius = std::sqrt(std::max(J, 0.0) / m);
+      if (radius < L.radius_of_gyration_min_m || radius > L.radius_of_gyration_max_m) {
+        std::ostringstream msg;
+        msg << body.name << ": inertia_kg_m2 about " << axes[i] << " = " << J
+            << " gives a radius of gyration sqrt(J/m) = " << radius << " m, outside "
+            << L.radius_of_gyration_min_m << " - " << L.radius_of_gyration_max_m
+            << " m (an inertia in t m^2 or g m^2, or another body's?)";
+        warn(r, "inertia_out_of_range", body.name, msg.str());
+      }
+    }
+    if (role == "wheelset" && std::abs(body.position_m.x()) > L.wheelset_position_x_max_m) {
+      std::ostringstream msg;
+      msg << body.name << ": position_m.x = " << body.position_m.x()
+          << " m; a wheelset is placed along the track by track_offset_m (now "
+          << body.track_offset_m << " m), its contact is evaluated in its own track frame. "
+          << "Move " << body.position_m.x() << " m into track_offset_m and set position_m.x = 0";
+      warn(r, "wheelset_placed_by_position", body.name, msg.str());
+    }
+    for (int i = 0; i < 3; ++i)
+      if (std::abs(body.position_m(i)) > L.body_position_max_m) {
+        std::ostringstream msg;
+        msg << body.name << ": position_m[" << i << "] = " << body.position_m(i)
+            << " m is beyond " << L.body_position_max_m
+            << " m from its track frame: it looks like millimetres (a body is placed along "
+               "the track by track_offset_m)";
+        warn(r, "unit_looks_wrong", body.name, msg.str());
+      }
+    if (std::abs(body.track_offset_m) > L.track_offset_max_m) {
+      std::ostringstream msg;
+      msg << body.name << ": track_offset_m = " << body.track_offset_m << " m is beyond "
+          << L.track_offset_max_m << " m: it looks like millimetres";
+      warn(r, "unit_looks_wrong", body.name, msg.str());
+    }
+  }
+}
+
+// --- contacts ---------------------------------------------------------------------------
+void check_contacts(const SceneSpec& spec, const ModelCheckLimits& L, ModelCheckReport& r) {
+  const double D = spec.track.rail_contact_distance_m;
+  for (const ContactSpec& c : spec.contacts) {
+    const double e0 = c.half_contact_distance_m;
+    if (std::abs(2.0 * e0 - D) > L.contact_distance_mismatch_max_m) {
+      std::ostringstream msg;
+      msg << "contacts." << c.name << ".half_contact_distance_m = " << e0
+          << " m: 2 x that = " << 2.0 * e0 << " m disagrees with track.rail_contact_distance_m = "
+          << D << " m (by more than " << L.contact_distance_mismatch_max_m
+          << " m); the cant angle asin(cant / D) and the wheel contact use different rails";
+      warn(r, "contact_distance_mismatch", c.name, msg.str());
+    }
+    for (const auto& [key, value] : {std::pair<const char*, double>{"half_contact_distance_m", e0},
+                                     {"nominal_rolling_radius_m", c.nominal_rolling_radius_m}})
+      if (std::abs(value) > L.wheel_geometry_max_m) {
+        std::ostringstream msg;
+        msg << "contacts." << c.name << "." << key << " = " << value << " m is beyond "
+            << L.wheel_geometry_max_m << " m: it looks like millimetres";
+        warn(r, "unit_looks_wrong", c.name, msg.str());
+      }
+  }
+  if (std::abs(D) > L.wheel_geometry_max_m) {
+    std::ostringstream msg;
+    msg << "track.rail_contact_distance_m = " << D << " m is beyond " << L.wheel_geometry_max_m
+        << " m: it looks like millimetres";
+    warn(r, "unit_looks_wrong", "track", msg.str());
+  }
+}
+
+// --- elements: geometry and static deflection ---------------------------------------
+template <class E> void add_deflections(const E& e, ModelCheckReport& r) {
+  const std::string& name = e.ends.name;
+  auto add = [&](const std::string& axis, const char* unit, double preload, double k) {
+    // An axis without stiffness deflects by nothing; a preload below 1 mN
+    // (N m) is round-off of the preload solve on an unloaded axis.
+    if (!(k > 0.0) || std::abs(preload) < 1e-3) return;
+    r.static_deflections.push_back({name, E::kType, axis, unit, preload, k, preload / k});
+  };
+  static const char* xyz[3] = {"x", "y", "z"};
+  if constexpr (std::is_same_v<E, SpringDamper3d<double>>) {
+    for (int i = 0; i < 3; ++i) add(xyz[i], "m", e.preload_N(i), e.stiffness_N_per_m(i));
+  } else if constexpr (std::is_same_v<E, RotationalSpringDamper<double>>) {
+    static const char* rpy[3] = {"roll", "pitch", "yaw"};
+    for (int i = 0; i < 3; ++i) add(rpy[i], "rad", e.preload_N_m(i), e.stiffness_N_m_per_rad(i));
+  } else if constexpr (std::is_same_v<E, LineSpringDamper<double>>) {
+    add("line", "m", e.preload_N, e.spring.slope_at_zero());
+  } else if constexpr (std::is_same_v<E, TractionRod<double>>) {
+    add("line", "m", e.preload_N, e.stiffness_N_per_m);
+  } else if constexpr (std::is_same_v<E, AntiRollBar<double>>) {
+    add("twist", "rad", e.preload_N_m, e.roll_stiffness_N_m_per_rad);
+  }
+  // series_spring_damper and bump_stop carry no preload (their headers).
+}
+
+void check_elements(const Model& model, const ModelCheckLimits& L, ModelCheckReport& r) {
+  for (const ElementTpl<double>& element : model.elements) {
+    std::visit(
+        [&](const auto& e) {
+          add_deflections(e, r);
+          const ElementEnds& ends = e.ends;
+          for (const auto& [key, p] : {std::pair{"point1_m", ends.point1_m},
+                                       std::pair{"point2_m", ends.point2_m}})
+            if (p.cwiseAbs().maxCoeff() > L.element_point_max_m) {
+              std::ostringstream msg;
+              msg << ends.name << ": " << key << " = [" << p.x() << ", " << p.y() << ", "
+                  << p.z() << "] m has a coordinate beyond " << L.element_point_max_m
+                  << " m from its body: it looks like millimetres";
+              warn(r, "unit_looks_wrong", ends.name, msg.str());
+            }
+          // Elements acting on the displacement of two points (free vector d0).
+          if constexpr (requires { e.free_vector_m; }) {
+            const double apart = e.free_vector_m.norm();
+            if (apart > L.spring_end_separation_max_m) {
+              std::ostringstream msg;
+              msg << ends.name << " (" << std::decay_t<decltype(e)>::kType
+                  << "): its end points are " << apart << " m apart at rest (body1 "
+                  << ends.body1_name << " point1_m, body2 " << ends.body2_name
+                  << " point2_m), more than " << L.spring_end_separation_max_m
+                  << " m: a point given in the other body's frame, or measured from the "
+                     "wrong origin?";
+              warn(r, "spring_ends_apart", ends.name, msg.str());
+            }
+          }
+        },
+        element);
+  }
+  for (const SpringDeflection& d : r.static_deflections)
+    if (std::abs(d.deflection) > L.static_deflection_max_m && d.unit == std::string("m")) {
+      std::ostringstream msg;
+      msg << d.element << ": static deflection " << d.axis << " = preload " << d.preload
+          << " N / stiffness " << d.stiffness << " N/m = " << d.deflection << " m, beyond "
+          << L.static_deflection_max_m << " m (a stiffness in kN/m, or on the wrong axis?)";
+      warn(r, "static_deflection_large", d.element, msg.str());
+    }
+}
+
+void static_checks(const SceneSpec& spec, const Model& model, const ModelCheckLimits& L,
+                   ModelCheckReport& r) {
+  r.scene = model.name;
+  r.gravity_m_per_s2 = model.gravity_m_per_s2;
+  check_bodies(spec, model, L, r);
+  check_contacts(spec, L, r);
+  check_elements(model, L, r);
+}
+
+// --- equilibrium: axle loads --------------------------------------------------------------
+void axle_loads(const Model& model, double V, const EquilibriumResult& eq,
+                const ModelCheckLimits& L, ModelCheckReport& r) {
+  EvaluationDetails details;
+  rhs(model, V, 0.0, eq.state, &details);
+  Eigen::MatrixXd q6, qd6;
+  model.full_coordinates(0.0, V, eq.state, q6, qd6);
+  for (size_t b = 0; b < model.bodies.size(); ++b) {
+    if (!model.bodies[b].wheelset()) continue;
+    AxleLoad a;
+    a.wheelset = model.bodies[b].name;
+    // Wheel load: the rail's total force on the wheel (normal and creep
+    // forces) along the track normal z_T; force_I is in the wheelset's
+    // non-spinning frame I, R_TI = Rz(yaw) Rx(roll).
+    const Eigen::Matrix3d R_TI = rot_z(q6(5, b)) * rot_x(q6(3, b));
+    for (const ContactSnapshot& c : details.contacts) {
+      if (c.body != int(b)) continue;
+      const double load = (R_TI * c.wheel.force_I).z();
+      (c.wheel.side > 0 ? a.left_N : a.right_N) += load;
+    }
+    a.total_N = a.left_N + a.right_N;
+    r.axle_load_sum_N += a.total_N;
+    if (a.total_N < L.axle_load_min_N || a.total_N > L.axle_load_max_N) {
+      std::ostringstream msg;
+      msg << a.wheelset << ": axle load " << a.total_N / 1e3 << " kN (" << a.total_N / r.gravity_m_per_s2 / 1e3
+          << " t) is outside " << L.axle_load_min_N / 1e3 << " - " << L.axle_load_max_N / 1e3
+          << " kN, the range of railway vehicles (masses in tonnes, or the wrong body "
+             "carried by this wheelset?)";
+      warn(r, "axle_load_out_of_range", a.wheelset, msg.str());
+    }
+    r.axle_loads.push_back(a);
+  }
+}
+
+// --- stiffness: unheld longitudinal coordinates ----------------------------------------------
+// Stiffness part of the Jacobian of the right-hand side (AD) at the state x:
+// with x = [q; u], the block d(du/dt)/dq = -M^-1 K. An eigenvalue
+// -omega^2 ~ 0 is a motion nothing resists (creep forces resist its rate
+// only); when its eigenvector is mostly body x coordinates, that is a free
+// longitudinal coordinate with nothing holding it. A coordinate whose column
+// is exactly zero (nothing depends on it) is reported directly. Translation
+// along the track changes no force whether or not x is an equilibrium, so
+// the test also runs on a model whose equilibrium failed (at its nominal
+// state).
+void unheld_longitudinal(const Model& model, double V, const Eigen::VectorXd& x,
+                         const ModelCheckLimits& L, ModelCheckReport& r) {
+  const Eigen::MatrixXd jac = rhs_jacobian_ad(model, V, 0.0, x);
+  const int n = model.n_coordinates;
+  std::vector<int> positions;  // state indices of the positions kept in K
+  for (int k = 0; k < n; ++k) {
+    if (is_spin_angle(model, k)) continue;  // cyclic by design (ERRATA 11a)
+    const auto [b, c] = model.coordinate_of_state[size_t(k)];
+    if (!jac.block(n, k, n, 1).isZero(0.0)) {
+      positions.push_back(k);
+    } else if (c == int(CoordinateIndex::x)) {
+      warn(r, "longitudinal_unheld", model.bodies[size_t(b)].name,
+           model.bodies[size_t(b)].name +
+               ".x is free but no force depends on it (no stiffness along x): it drifts; hold "
+               "it (remove \"x\" from free) or connect it longitudinally");
+    }
+  }
+  const int m = int(positions.size());
+  if (m == 0) return;
+  Eigen::MatrixXd K(m, m);  // d(acceleration)/d(position), 1/s^2
+  for (int i = 0; i < m; ++i)
+    for (int j = 0; j < m; ++j) {
+      K(i, j) = jac(n + positions[size_t(i)], positions[size_t(j)]);
+    }
+  Eigen::EigenSolver<Eigen::MatrixXd> es(K);
+  if (es.info() != Eigen::Success) return;
+  const double omega2_max = std::pow(2.0 * kPi * L.unheld_frequency_max_hz, 2);
+  for (int i = 0; i < m; ++i) {
+    if (std::abs(es.eigenvalues()(i)) > omega2_max) continue;
+    const Eigen::VectorXcd v = es.eigenvectors().col(i);
+    double total = v.squaredNorm(), along_x = 0.0, largest = 0.0;
+    for (int j = 0; j < m; ++j)
+      if (model.coordinate_of_state[size_t(positions[size_t(j)])].second == 0) {
+        along_x += std::norm(v(j));
+        largest = std::max(largest, std::norm(v(j)));
+      }
+    if (!(total > 0.0) || along_x < 0.5 * total) continue;
+    std::string bodies;
+    for (int j = 0; j < m; ++j) {
+      const auto [b, c] = model.coordinate_of_state[size_t(positions[size_t(j)])];
+      if (c == 0 && std::norm(v(j)) > 0.1 * largest)
+        bodies += (bodies.empty() ? "" : ", ") + model.bodies[size_t(b)].name;
+    }
+    std::ostringstream msg;
+    msg << "nothing holds the longitudinal position (x) of " << bodies
+        << ": the linearised stiffness has an eigenvalue omega^2 = "
+        << std::abs(es.eigenvalues()(i)) << " 1/s^2 (below "
+        << L.unheld_frequency_max_hz
+        << " Hz) along their x; creep forces resist its rate only. Hold one body's x (as the "
+           "thesis vehicle holds the car body's) or add a longitudinal connection";
+    warn(r, "longitudinal_unheld", bodies, msg.str());
+  }
+}
+
+void natural_frequencies(const Model& model, double V, const EquilibriumResult& eq,
+                         const ModelCheckOptions& o, ModelCheckReport& r) {
+  r.natural_frequency_speed_m_per_s = o.natural_frequency_speed_m_per_s;
+  r.natural_frequency_min_hz = o.natural_frequency_min_hz;
+  r.natural_frequency_max_hz = o.natural_frequency_max_hz;
+  StabilityOptions so;
+  so.solver = EigenSolverKind::dense;
+  so.max_frequency_hz = o.natural_frequency_max_hz;
+  SpeedStability stability(model, eq.state, V, so);
+  const StabilityPoint p = stability.at(o.natural_frequency_speed_m_per_s);
+  for (const ModeReport& mode : p.modes) {
+    if (mode.neutral || !(mode.eigenvalue.imag() > 0.0)) continue;
+    if (mode.frequency_hz < o.natural_frequency_min_hz ||
+        mode.frequency_hz > o.natural_frequency_max_hz)
+      continue;
+    if (!std::isfinite(mode.frequency_hz) || !std::isfinite(mode.damping_ratio)) continue;
+    r.natural_frequencies.push_back({mode.frequency_hz, mode.damping_ratio, mode.name});
+  }
+  if (r.natural_frequencies.empty()) {
+    std::ostringstream note;
+    note << "no natural frequency at rest between " << o.natural_frequency_min_hz << " and "
+         << o.natural_frequency_max_hz << " Hz";
+    r.natural_frequency_note = note.str();
+  }
+  std::sort(r.natural_frequencies.begin(), r.natural_frequencies.end(),
+            [](const NaturalFrequency& a, const NaturalFrequency& b) {
+              return a.frequency_hz < b.frequency_hz;
+            });
+}
+
+}  // namespace
+
+bool ModelCheckReport::has_warning(const std::string& kind) const {
+  return std::any_of(warnings.begin(), warnings.end(),
+                     [&](const ModelWarning& w) { return w.kind == kind; });
+}
+
+ModelCheckReport check_model(const SceneSpec& spec, const Model& model, double speed_m_per_s,
+                             const EquilibriumResult& equilibrium,
+                             const ModelCheckOptions& options) {
+  ModelCheckReport r;
+  r.speed_m_per_s = speed_m_per_s;
+  static_checks(spec, model, options.limits, r);
+  axle_loads(model, speed_m_per_s, equilibrium, options.limits, r);
+  unheld_longitudinal(model, speed_m_per_s, equilibrium.state, options.limits, r);
+  if (options.natural_frequencies) {
+    try {
+      natural_frequencies(model, speed_m_per_s, equilibrium, options, r);
+    } catch (const std::exception& e) {
+      r.natural_frequency_note = "no natural frequencies: " + std::string(e.what());
+    }
+  }
+  return r;
+}
+
+ModelCheckReport check_model_without_equilibrium(const SceneSpec& spec, const Model& model,
+                                                 const std::string& error,
+                                                 const ModelCheckOptions& options) {
+  ModelCheckReport r;
+  r.speed_m_per_s = spec.speed_m_per_s;
+  static_checks(spec, model, options.limits, r);
+  unheld_longitudinal(model, spec.speed_m_per_s,
+                      lowered_nominal_state(model, spec.speed_m_per_s), options.limits, r);
+  r.errors.push_back(error);
+  r.natural_frequency_note = "no natural frequencies: no equilibrium";
+  return r;
+}
+
+ModelCheckReport check_scene(const SceneSpec& spec, const ModelCheckOptions& options) {
+  // Without its preloads (their solve is a static equilibrium and fails on
+  // the same mistakes) the model is still worth checking.
+  std::optional<Model> model;
+  try {
+    model.emplace(build_model(spec));
+  } catch (const std::exception& e) {
+    SceneSpec unloaded = spec;
+    unloaded.preload = PreloadMode::none;
+    const Model m = build_model(unloaded);
+    return check_model_without_equilibrium(
+        spec, m, std::string("the gravity preloads could not be solved: ") + e.what(), options);
+  }
+  const double V = spec.speed_m_per_s;
+  EquilibriumResult eq;
+  try {
+    eq = solve_equilibrium(*model, V, lowered_nominal_state(*model, V));
+  } catch (const std::exception& e) {
+    return check_model_without_equilibrium(spec, *model, e.what(), options);
+  }
+  return check_model(spec, *model, V, eq, options);
+}
+
+}  // namespace railstab

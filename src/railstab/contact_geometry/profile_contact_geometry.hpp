@@ -1,0 +1,33 @@
+#pragma once
+// The wheel-rail contact of a scene with geometry = "profiles": the placed
+// profile pair and its contact table, built once when the scene is read and
+// shared (immutable) by every model built from it (a table costs ~0.1-0.2 s;
+// the twins of the preload and curve set-up reuse it).
+#include <railstab/contact_geometry/contact_tables.hpp>
+#include <railstab/profiles/profile_pair.hpp>
+#include <railstab/scene/scene_spec.hpp>
+
+#include <memory>
+
+namespace railstab {
+
+struct ProfileContactGeometry {
+  ProfilePair pair;
+  ContactTable table;
+  // The steepest angle of the wheel's flange face (between the flange tip
+  // and the tape circle), the angle of Nadal's derailment limit
+  //   Y/Q = (tan(beta) - mu) / (1 + mu tan(beta)).
+  double flange_angle_rad = 0.0;
+};
+
+// Reads both profile files, places the pair with `nominal_rolling_radius_m`
+// and builds the table. Throws ProfileError naming the file (and line) or
+// the placement key, and what was expected; also when the centred wheelset
+// has no contact on either slot's table (profiles that do not touch).
+std::shared_ptr<const ProfileContactGeometry> build_profile_contact_geometry(
+    const ProfileSourceSpec& source, double nominal_rolling_radius_m);
+
+// Nadal's limit for a flange angle and friction coefficient.
+double nadal_limit(double flange_angle_rad, double friction_coefficient);
+
+}  // namespace railstab

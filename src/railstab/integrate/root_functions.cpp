@@ -1,0 +1,83 @@
+#include <railstab/integrate/root_functions.hpp>
+
+#include <railstab/contact/wheel_rail.hpp>
+#include <railstab/model/equations_of_motion.hpp>
+
+namespace railstab {
+
+RootFunctionSet::RootFunctionSet(const Model& model, double speed_m_per_s)
+    : model_(&model), speed_m_per_s_(speed_m_per_s) {
+  for (int b = 0; b < int(model.bodies.size()); ++b) {
+    const Body& body = model.bodies[size_t(b)];
+    if (!body.wheelset()) continue;
+    const int contact = body.wheelset()->contact;
+    // Profile contact has its flange: no validity limit to stop at, and its
+    // contact points come and go smoothly (Hertz, C1 at zero overlap; the
+    // table's slots) without events.
+    if (model.contacts[size_t(contact)].spec.geometry == ContactGeometryKind::profiles) continue;
+    const int k = body.state_index[int(CoordinateIndex::y)];
+    if (k >= 0) {
+      RootFunction f;
+      f.kind = RootFunction::Kind::flange_clearance;
+      f.body = b;
+      f.state = k;
+      f.clearance_m = model.contacts[size_t(contact)].spec.flange_clearance_m;
+      functions_.push_back(f);
+    }
+    // A prescribed wheel load never lifts off.
+    if (model.contacts[size_t(contact)].spec.normal != NormalForceKind::hertz) continue;
+    for (int side : {1, -1}) {
+      RootFunction f;
+      f.kind = RootFunction::Kind::wheel_contact;
+      f.body = b;
+      f.side = side;
+      functions_.push_back(f);
+      has_wheels_ = true;
+    }
+  }
+  // The penetration does not depend on the force laws; with a prescribed zero
+  // load and no creep, evaluate_wheel_contact stops after the geometry.
+  geometry_only_ = model.contacts;
+  for (ModelContact& c : geometry_only_) {
+    c.spec.tangential = TangentialForceKind::none;
+    if (c.spec.normal_damping_N_s_per_m > 0.0) continue;  // needs the force law
+    c.spec.normal = NormalForceKind::prescribed;
+    c.spec.prescribed_wheel_load_N = 0.0;
+  }
+}
+
+void RootFunctionSet::evaluate(double t_s, const Eigen::Ref<const Eigen::VectorXd>& x,
+                               double* g) const {
+  Workspace<double> ws;
+  if (has_wheels_) compute_all_body_motions<double>(*model_, ws, t_s, speed_m_per_s_, x);
+  for (size_t i = 0; i < functions_.size(); ++i) {
+    const RootFunction& f = functions_[i];
+    if (f.kind == RootFunction::Kind::flange_clearance) {
+      g[i] = f.clearance_m * f.clearance_m - x(f.state) * x(f.state);
+    } else {
+      const ModelContact& c =
+          geometry_only_[size_t(model_->bodies[size_t(f.body)].wheelset()->contact)];
+      const WheelContact<double> w =
+          evaluate_wheel_contact(c, ws.motions[size_t(f.body)], f.side, speed_m_per_s_);
+      const double penetration = w.penetration_m;
+      if (c.spec.normal_damping_N_s_per_m > 0.0 && penetration > 0.0) {
+        g[i] = w.unclipped_normal_force_N != 0.0 ? w.unclipped_normal_force_N : -1e-20;
+        continue;
+      }
+      // The penetration is a difference of two radii near 0.45 m, quantised
+      // to ~1e-16 m, so it is exactly zero on a short plateau around a
+      // crossing; SUNDIALS rejects a root function that stays exactly zero
+      // ("root found at and very near t"). Zero means no force in the model
+      // (contact iff penetration > 0), so it counts as a negative far below
+      // the rounding quantum (not a denormal: the root finder divides by g).
+      g[i] = penetration != 0.0 ? penetration : -1e-20;
+    }
+  }
+}
+
+std::string RootFunctionSet::wheel_name(int i) const {
+  const RootFunction& f = functions_[size_t(i)];
+  return model_->bodies[size_t(f.body)].name + (f.side > 0 ? " left wheel" : " right wheel");
+}
+
+}  // namespace railstab

@@ -1,0 +1,202 @@
+#include <railstab/report/contact_geometry_report.hpp>
+
+#include <railstab/contact_geometry/wheelset_pose.hpp>
+#include <railstab/io/json_writer.hpp>
+#include <railstab/io/gnuplot.hpp>
+#include <railstab/io/output_set.hpp>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+#include <stdexcept>
+
+namespace railstab {
+namespace {
+
+// A CSV field; refuses non-finite numbers.
+struct Csv {
+  std::ostream& out;
+  bool first = true;
+  Csv& operator<<(double v) {
+    if (!std::isfinite(v)) throw std::runtime_error("non-finite value in a contact-geometry CSV");
+    out << (first ? "" : ",") << v;
+    first = false;
+    return *this;
+  }
+  Csv& empty() {
+    out << (first ? "" : ",");
+    first = false;
+    return *this;
+  }
+  void end() {
+    out << '\n';
+    first = true;
+  }
+};
+
+void write_contact(Csv& c, const ContactPoint* p) {
+  if (p) c << p->contact_angle_rad << p->rolling_radius_m << p->rail_y_m << p->wheel_u_m << p->vertical_gap_m;
+  else c.empty().empty().empty().empty().empty();
+}
+
+}  // namespace
+
+void write_contact_geometry_report(const ProfilePair& pair, const ContactGeometrySummary& s,
+                                   const std::string& scene_name, const std::string& contact_name,
+                                   OutputSet& outputs, const std::string& stem, bool plots) {
+  struct {
+    std::string characteristic_csv, conicity_csv, json;
+  } files;
+  files.characteristic_csv = stem + "_characteristic.csv";
+  files.conicity_csv = stem + "_conicity.csv";
+  files.json = stem + ".json";
+  const std::string profiles_dat = stem + "_profiles.dat";
+  const std::string png_profiles = stem + "_profiles.png";
+  const std::string png_delta_r = stem + "_delta_r.png";
+  const std::string png_conicity = stem + "_conicity.png";
+  const std::string script = stem + "_plots.gp";
+  // A run without plots removes an earlier run's plots of these names, so
+  // old plots never sit beside new data.
+  for (const std::string& f : {profiles_dat, png_profiles, png_delta_r, png_conicity, script})
+    outputs.replaces(f);
+
+  outputs.write(files.characteristic_csv, [&](std::ostream& out) {
+    out << std::setprecision(10);
+    out << "y_m,delta_r_m,roll_rad,vertical_m,contact_angle_left_rad,contact_angle_right_rad,"
+           "rolling_radius_left_m,rolling_radius_right_m,contact_y_rail_left_m,"
+           "contact_y_rail_right_m,contact_u_wheel_left_m,contact_u_wheel_right_m,"
+           "contacts_left,contacts_right,"
+           "second_contact_angle_left_rad,second_rolling_radius_left_m,"
+           "second_contact_y_rail_left_m,second_contact_u_wheel_left_m,second_gap_left_m,"
+           "second_contact_angle_right_rad,second_rolling_radius_right_m,"
+           "second_contact_y_rail_right_m,second_contact_u_wheel_right_m,second_gap_right_m\n";
+    Csv c{out};
+    for (const CharacteristicRow& row : s.rows) {
+      const RigidContactSolution& r = row.solution;
+      const ContactPoint &l = r.left.front(), &rr = r.right.front();
+      c << r.lateral_m << row.delta_r_m() << r.roll_rad << r.vertical_m << l.contact_angle_rad
+        << rr.contact_angle_rad << l.rolling_radius_m << rr.rolling_radius_m << l.rail_y_m
+        << rr.rail_y_m << l.wheel_u_m << rr.wheel_u_m << double(r.contacts_left())
+        << double(r.contacts_right());
+      write_contact(c, r.left.size() > 1 ? &r.left[1] : nullptr);
+      write_contact(c, r.right.size() > 1 ? &r.right[1] : nullptr);
+      c.end();
+    }
+  });
+  outputs.write(files.conicity_csv, [&](std::ostream& out) {
+    out << std::setprecision(10) << "amplitude_m,wavelength_m,equivalent_conicity\n";
+    Csv c{out};
+    for (const ConicityPoint& p : s.conicity) {
+      c << p.amplitude_m << p.wavelength_m << p.equivalent_conicity;
+      c.end();
+    }
+  });
+  outputs.write(files.json, [&](std::ostream& out) {
+    JsonWriter j(out);
+    const ProfilePairParameters& p = pair.parameters;
+    j.begin_object()
+        .field("scene", scene_name)
+        .field("contact", contact_name)
+        .field("wheel_profile", pair.wheel.source)
+        .field("rail_profile", pair.rail.source)
+        .field("track_gauge_m", p.track_gauge_m)
+        .field("gauge_measuring_height_m", p.gauge_measuring_height_m)
+        .field("flange_back_distance_m", p.flange_back_distance_m)
+        .field("nominal_rolling_radius_m", p.nominal_rolling_radius_m)
+        .field("rail_inclination_rad", p.rail_inclination_rad)
+        .field("tape_circle_from_flange_back_m", p.tape_circle_from_flange_back_m)
+        .field("half_contact_distance_m", s.half_contact_distance_m)
+        .field("method", "EN 15302: integration of the Klingel motion y'' = -delta_r(y)/(2 e0 r0) "
+                         "over the rigid-contact delta_r function (yaw neglected); "
+                         "tan(gamma_e) = r0 e0 (2 pi / lambda)^2")
+        .field("equivalent_conicity_at_3mm", s.equivalent_conicity_at_3mm)
+        .field("flange_contact_found", s.flange.found);
+    if (s.flange.found) j.field("flange_contact_shift_m", s.flange.lateral_shift_m);
+    j.key("equivalent_conicity").begin_array();
+    for (const ConicityPoint& c : s.conicity)
+      j.begin_object()
+          .field("amplitude_m", c.amplitude_m)
+          .field("wavelength_m", c.wavelength_m)
+          .field("equivalent_conicity", c.equivalent_conicity)
+          .end_object();
+    j.end_array().end_object();
+  });
+
+  if (!plots) return;
+
+  // Plot data: the left rail and the centred left wheel in the track frame
+  // (mm), and one line per lateral shift from the rail contact point to the
+  // wheel point that touches it (drawn on the centred wheel).
+  outputs.write(profiles_dat, [&](std::ostream& out) {
+    out << std::setprecision(8) << "# left rail (track frame, mm)\n";
+    for (size_t i = 0; i < pair.rail.y_m.size(); ++i)
+      out << (pair.rail_offset_y_m + pair.rail.y_m[i]) * 1e3 << ' '
+          << (pair.rail.z_m[i] - pair.rail_top_z_m) * 1e3 << '\n';
+    out << "\n\n# centred left wheel (rigid contact at y = 0)\n";
+    const RigidContactSolution centred = solve_rigid_contact(pair, 0.0);
+    const double lift = centred.vertical_m;  // wheel height in the rail frame offset
+    const WheelPoseOf<double> pose =
+        wheel_pose_in_rail_frame<double>(pair, +1, 0.0, lift, centred.roll_rad);
+    auto wheel_point = [&](double u, double& yT, double& zT) {
+      const double c = std::cos(pose.roll_rad), sn = std::sin(pose.roll_rad);
+      const double zw = pair.wheel_z(u);
+      yT = pair.rail_offset_y_m + pose.lateral_m + u * c - zw * sn;
+      zT = pose.vertical_m + u * sn + zw * c - pair.rail_top_z_m;
+    };
+    for (size_t i = 0; i < pair.wheel.y_m.size(); ++i) {
+      double yT, zT;
+      wheel_point(pair.wheel.y_m[i], yT, zT);
+      out << yT * 1e3 << ' ' << zT * 1e3 << '\n';
+    }
+    out << "\n\n# contact-point lines, every 0.5 mm of shift\n";
+    for (const CharacteristicRow& row : s.rows) {
+      const double y = row.solution.lateral_m;
+      if (std::abs(std::remainder(y, 5e-4)) > 1e-9) continue;
+      for (const ContactPoint& cp : row.solution.left) {
+        if (cp.vertical_gap_m > kSecondContactGapTolerance_m) continue;
+        double yT, zT;
+        wheel_point(cp.wheel_u_m, yT, zT);
+        out << (pair.rail_offset_y_m + cp.rail_y_m) * 1e3 << ' '
+            << (cp.rail_z_m - pair.rail_top_z_m) * 1e3 << '\n'
+            << yT * 1e3 << ' ' << zT * 1e3 << "\n\n";
+      }
+    }
+  });
+  // Names and titles as gnuplot string literals (a quote in a scene or
+  // contact name cannot end the string and run commands); gnuplot runs in
+  // the staging folder, where these files are.
+  const std::string title = scene_name + " / " + contact_name;
+  auto text = [](const std::string& t) { return gnuplot_text(t); };
+  auto path = [](const std::string& f) { return gnuplot_path(f); };
+  std::ostringstream conicity_at_3mm;
+  conicity_at_3mm << s.equivalent_conicity_at_3mm;
+  outputs.write(script, [&](std::ostream& gp) {
+    gp << "set terminal pngcairo size 1000,620 font 'Sans,10' noenhanced\nset grid\n"
+       << "set output " << path(png_profiles) << "\n"
+       << "set title " << text(title + ": left wheel (centred) on its rail; lines join the rail "
+                               "and wheel contact points for shifts -10..10 mm (every 0.5 mm)")
+       << "\nset xlabel 'y, track frame [mm]'\nset ylabel 'z [mm]'\nset size ratio -1\n"
+       << "plot " << path(profiles_dat) << " index 0 with lines lw 2 title 'rail', "
+       << path(profiles_dat) << " index 1 with lines lw 2 title 'wheel', " << path(profiles_dat)
+       << " index 2 with lines lc rgb 'gray40' title 'contact points'\n"
+       << "set size noratio\nset datafile separator ','\n"
+       << "set output " << path(png_delta_r) << "\n"
+       << "set title " << text(title + ": rolling-radius difference (rigid contact)") << "\n"
+       << "set xlabel 'lateral shift y [mm]'\nset ylabel 'delta r = r_left - r_right [mm]'\n"
+       << "plot " << path(files.characteristic_csv)
+       << " skip 1 using ($1*1e3):($2*1e3) with lines lw 2 title 'delta r'\n"
+       << "set output " << path(png_conicity) << "\n"
+       << "set title "
+       << text(title + ": equivalent conicity (EN 15302, Klingel integration); at 3 mm: " +
+               conicity_at_3mm.str())
+       << "\nset xlabel 'amplitude [mm]'\nset ylabel 'equivalent conicity tan(gamma_e)'\n"
+       << "plot " << path(files.conicity_csv)
+       << " skip 1 using ($1*1e3):3 with linespoints lw 2 title 'equivalent conicity'\n"
+       << "unset output\n";
+  });
+  const std::vector<std::string> pngs = {png_profiles, png_delta_r, png_conicity};
+  for (const std::string& f : pngs) outputs.add(f);
+  run_gnuplot(script, outputs.staging_dir(), pngs);
+}
+
+}  // namespace railstab

@@ -1,0 +1,25 @@
+#pragma once
+// Files of `railstab contact-geometry`: characteristic functions (CSV), the
+// equivalent conicity (CSV and JSON) and three plots (gnuplot PNG).
+#include <railstab/contact_geometry/contact_geometry_summary.hpp>
+
+#include <string>
+#include <vector>
+
+namespace railstab {
+
+class OutputSet;
+
+// Writes, through `outputs` (all or nothing, committed by the caller),
+// <stem>_characteristic.csv, <stem>_conicity.csv, <stem>.json and, with
+// plots, <stem>_{profiles,delta_r,conicity}.png with their data and script
+// (gnuplot without a shell, in the staging folder; every plot checked).
+// A non-finite number is an error. `scene_name`, `contact_name` name the
+// scene and contact in titles and JSON (any text: quoted for gnuplot).
+// With plots = false gnuplot is not run and an earlier run's plots of the
+// same names are removed at commit.
+void write_contact_geometry_report(const ProfilePair& pair, const ContactGeometrySummary& summary,
+                                   const std::string& scene_name, const std::string& contact_name,
+                                   OutputSet& outputs, const std::string& stem, bool plots = true);
+
+}  // namespace railstab

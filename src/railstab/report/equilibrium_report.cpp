@@ -1,0 +1,132 @@
+#include <railstab/report/equilibrium_report.hpp>
+
+#include <railstab/contact/wheel_forces.hpp>
+
+#include <railstab/io/json_writer.hpp>
+#include <railstab/model/equations_of_motion.hpp>
+#include <railstab/report/run_conditions.hpp>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+#include <stdexcept>
+
+namespace railstab {
+
+void check_finite_equilibrium(const Model& model, double speed_m_per_s,
+                              const Eigen::MatrixXd& q6, const Eigen::MatrixXd& qd6) {
+  for (Eigen::Index b = 0; b < q6.cols(); ++b)
+    for (int c = 0; c < 6; ++c)
+      if (!std::isfinite(q6(c, b)) || !std::isfinite(qd6(c, b))) {
+        std::ostringstream msg;
+        msg << "equilibrium of " << model.name << " at " << speed_m_per_s
+            << " m/s: " << model.bodies[size_t(b)].name << '.' << kCoordinateNames[c]
+            << " is not finite (position " << q6(c, b) << ", rate " << qd6(c, b)
+            << "); no output written";
+        throw std::runtime_error(msg.str());
+      }
+}
+
+std::string write_equilibrium_results(const PreparedScene& s, OutputSet& outputs,
+                                      const std::string& stem) {
+  const Model& model = s.model;
+  EvaluationDetails details;
+  rhs(model, s.speed_m_per_s, 0.0, s.equilibrium.state, &details);
+  const std::vector<WheelForces> wheels =
+      wheel_forces(model, s.speed_m_per_s, 0.0, s.equilibrium.state);
+  Eigen::MatrixXd q6, qd6;
+  model.full_coordinates(0.0, s.speed_m_per_s, s.equilibrium.state, q6, qd6);
+  check_finite_equilibrium(model, s.speed_m_per_s, q6, qd6);
+  // The text for the terminal is collected while the JSON is rendered and
+  // returned only once the JSON holds no non-finite value.
+  std::ostringstream shown;
+  shown << std::setprecision(6) << "equilibrium of " << model.name << " at "
+        << s.speed_m_per_s << " m/s: " << s.equilibrium.iterations
+        << " Newton iterations";
+  if (s.equilibrium.pseudo_transient_steps > 0)
+    shown << " (after " << s.equilibrium.pseudo_transient_steps
+          << " pseudo-transient steps from the nominal guess)";
+  shown << ", max acceleration residual " << s.equilibrium.max_acceleration << "\n";
+  outputs.write(stem + "_equilibrium.json", [&](std::ostream& out) {
+    JsonWriter j(out);
+    j.begin_object().field("scene", model.name).field("speed_m_s", s.speed_m_per_s);
+    write_conditions_json(j, run_conditions(model), {s.speed_m_per_s});
+    j.field("newton_iterations", s.equilibrium.iterations)
+        .field("pseudo_transient_steps", s.equilibrium.pseudo_transient_steps)
+        .field("max_acceleration_residual", s.equilibrium.max_acceleration);
+    j.key("bodies").begin_array();
+    for (size_t b = 0; b < model.bodies.size(); ++b) {
+      j.begin_object().field("name", model.bodies[b].name);
+      for (int c = 0; c < 6; ++c) {
+        const double offset = q6(c, b) - model.bodies[b].nominal_q(c);
+        if (c == int(CoordinateIndex::pitch) && model.bodies[b].wheelset()) {
+          j.field("spin_rate_rad_s", qd6(c, b));
+          continue;
+        }
+        j.field(kCoordinateNames[c] + "_offset", offset);
+      }
+      shown << "  " << std::left << std::setw(10) << model.bodies[b].name << std::right
+            << " lateral " << std::setw(12) << q6(1, b) * 1e3 << " mm  yaw " << std::setw(12)
+            << q6(5, b) * 1e3 << " mrad  roll " << std::setw(12) << q6(3, b) * 1e3
+            << " mrad  vertical offset " << std::setw(12)
+            << (q6(2, b) - model.bodies[b].nominal_q(2)) * 1e3 << " mm\n";
+      j.key("wheels").begin_array();
+      for (const ContactSnapshot& c : details.contacts) {
+        if (c.body != int(b)) continue;
+        const WheelContact<double>& w = c.wheel;
+        j.begin_object()
+            .field("side", w.side > 0 ? "left" : "right")
+            .field("contact_point", w.slot)
+            .field("contact_angle_rad", w.contact_angle_rad)
+            .field("normal_force_N", w.normal_force_N)
+            .field("penetration_m", w.penetration_m)
+            .field("rolling_radius_m", w.rolling_radius_m)
+            .field("creepage_longitudinal", w.creep_x)
+            .field("creepage_lateral", w.creep_y)
+            .field("creepage_spin_per_m", w.creep_spin_per_m)
+            .field("creep_force_longitudinal_N", w.creep_force_x_N)
+            .field("creep_force_lateral_N", w.creep_force_y_N)
+            .field("spin_creep_moment_N_m", w.spin_moment_N_m)
+            .field("total_force_on_wheelset_I_N_x", w.force_I.x())
+            .field("total_force_on_wheelset_I_N_y", w.force_I.y())
+            .field("total_force_on_wheelset_I_N_z", w.force_I.z())
+            .end_object();
+        shown << "      " << (w.side > 0 ? "left " : "right") << " wheel load "
+              << w.normal_force_N << " N, creepages (" << w.creep_x << ", " << w.creep_y
+              << ", " << w.creep_spin_per_m << " 1/m), creep forces (" << w.creep_force_x_N
+              << ", " << w.creep_force_y_N << " N, " << w.spin_moment_N_m << " N m)\n";
+      }
+      j.end_array();
+      // Y, Q and Y/Q per wheel (contact/wheel_forces.hpp), against Nadal.
+      j.key("wheel_forces").begin_array();
+      for (const WheelForces& w : wheels) {
+        if (w.body != int(b)) continue;
+        j.begin_object()
+            .field("side", w.side > 0 ? "left" : "right")
+            .field("Y_N", w.Y_N)
+            .field("Q_N", w.Q_N);
+        if (w.y_over_q) j.field("Y_over_Q", *w.y_over_q);
+        else j.key("Y_over_Q").null();
+        if (w.nadal_limit) j.field("nadal_limit", *w.nadal_limit);
+        else j.key("nadal_limit").null();
+        j.end_object();
+        shown << "      " << (w.side > 0 ? "left " : "right") << " wheel Y " << w.Y_N
+              << " N, Q " << w.Q_N << " N";
+        if (w.y_over_q) shown << ", Y/Q " << *w.y_over_q;
+        if (w.nadal_limit) shown << " (Nadal's limit " << *w.nadal_limit << ")";
+        shown << "\n";
+      }
+      j.end_array().end_object();
+    }
+    j.end_array();
+    if (const auto w = wheel_beyond_nadal_limit(wheels)) {
+      j.field("warning", nadal_warning(model, *w));
+      shown << "warning: " << nadal_warning(model, *w) << "\n";
+    } else
+      j.key("warning").null();
+    j.end_object();
+  });
+  return shown.str();
+}
+
+}  // namespace railstab

@@ -1,0 +1,53 @@
+#pragma once
+// Results of the speed analysis as files: eigenvalues over speed (CSV),
+// tracked modes (gnuplot data), root-locus / damping / frequency plots,
+// the critical-speed JSON and the Markdown report that links the plots.
+#include <railstab/io/output_set.hpp>
+#include <railstab/model/model.hpp>
+#include <railstab/stability/speed_analysis.hpp>
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace railstab {
+
+// File names in the output folder.
+struct StabilityFiles {
+  std::string csv, json, markdown;
+  std::vector<std::string> plots;
+};
+
+// Adds every file, named <stem>_..., to `outputs` (staged; the caller
+// commits): eigenvalue CSV, JSON, Markdown and, with `plots`, the gnuplot
+// data, script, PNGs and SVGs (gnuplot run and checked; throws GnuplotError).
+// `max_plot_frequency_hz` keeps the stiff contact modes off the plots and
+// bounds the JSON's modes_at_critical_speed (each with its shape).
+StabilityFiles write_stability_results(const Model& model, const CriticalSpeedResult& result,
+                                       OutputSet& outputs, const std::string& stem,
+                                       const std::string& eigen_solver_name, bool plots = true,
+                                       double max_plot_frequency_hz = 20.0);
+
+// The outcome for the terminal: the critical speed (or stable / unstable
+// over the range), where the steady state was lost, the first validity
+// warning, the first unstable mode above the hunting band
+// (`hunting_band_hz`), the number of speed evaluations and their time.
+void print_critical_speed_summary(std::ostream& out, const Model& model,
+                                  const CriticalSpeedResult& r, double hunting_band_hz);
+
+// The outcome of a critical-speed run, one decision for every output (JSON
+// "verdict", Markdown, terminal), so they cannot disagree.
+enum class StabilityVerdict {
+  unstable_at_start,
+  critical_speed_found,
+  stable_in_range,                // no crossing over the whole range asked
+  stable_below_equilibrium_loss,  // no crossing, but the steady state was lost below the top
+};
+StabilityVerdict stability_verdict(const CriticalSpeedResult& r);
+std::string verdict_key(StabilityVerdict v);       // the JSON "verdict" value
+std::string verdict_sentence(const CriticalSpeedResult& r);  // the words all outputs use
+
+// Every name write_stability_results may write for `stem`.
+std::vector<std::string> stability_file_names(const std::string& stem);
+
+}  // namespace railstab

@@ -1,0 +1,43 @@
+#pragma once
+// The first steps of every analysis: read the scene, apply overrides, build
+// the model (preloads solved in), solve the static/steady equilibrium at the
+// run's speed.
+#include <railstab/equilibrium/equilibrium.hpp>
+#include <railstab/io/scene_set_values.hpp>
+#include <railstab/model/model.hpp>
+#include <railstab/scene/scene_spec.hpp>
+#include <railstab/setup/build_model.hpp>
+
+#include <optional>
+#include <string>
+
+namespace railstab {
+
+struct SceneOverrides {
+  std::optional<double> speed_m_per_s;
+  std::optional<double> t_end_s;
+  // Where the reference point is at t = 0 (e.g. inside an arc for steady
+  // curving); the scene's reference_arc_length_m otherwise.
+  std::optional<double> reference_arc_length_m;
+  // --set KEY=VALUE, applied to the file's document before it is read
+  // (io/scene_set_values.hpp), in order.
+  std::vector<SceneValueSetting> values;
+};
+
+struct PreparedScene {
+  SceneSpec spec;
+  Model model;
+  double speed_m_per_s = 0.0;     // of this run: the override, or the scene's
+  EquilibriumResult equilibrium;  // at t = 0 (steady rolling / curving at that speed)
+};
+
+PreparedScene prepare_scene(const std::string& path, const SceneOverrides& overrides);
+// The first step alone: the scene file read, the overrides applied, validated.
+SceneSpec load_scene_with_overrides(const std::string& path, const SceneOverrides& overrides);
+// The same from a scene already read (overrides applied by the caller).
+PreparedScene prepare_scene(SceneSpec spec);
+
+// Equilibrium state plus the scene's initial offsets and rates.
+Eigen::VectorXd perturbed_initial_state(const PreparedScene& scene);
+
+}  // namespace railstab
