@@ -36,7 +36,7 @@
 #include <railstab/equilibrium/equilibrium.hpp>
 #include <railstab/integrate/integrator.hpp>
 #include <railstab/io/regular_file.hpp>
-#include <railstab/io/scene_loader.hpp>
+#include <railstab/scene_reading/load_scene.hpp>
 #include <railstab/linear/jacobian.hpp>
 #include <railstab/linear/linearization.hpp>
 #include <railstab/setup/prepare_scene.hpp>
@@ -83,7 +83,7 @@ SceneSpec train_scene(const std::string& cases_dir, int cars) {
   const double reference = std::max(200.0, 26.0 * cars + 80.0);
   text = std::regex_replace(text, std::regex("reference_arc_length_m = 200.0"),
                             "reference_arc_length_m = " + std::to_string(reference));
-  return parse_scene(text, "thesis_train_" + std::to_string(cars));
+  return load_scene_text(text, "thesis_train_" + std::to_string(cars));
 }
 
 CriticalSpeedOptions twelve_speeds(EigenSolverKind solver) {

@@ -11,7 +11,7 @@
 // Built only with clang (CMake option RAILSTAB_SANITIZE, scripts/sanitize.sh);
 // seed corpus: cases/*.toml.
 #include <railstab/equilibrium/equilibrium.hpp>
-#include <railstab/io/scene_loader.hpp>
+#include <railstab/scene_reading/load_scene.hpp>
 #include <railstab/model/equations_of_motion.hpp>
 #include <railstab/setup/build_model.hpp>
 
@@ -53,7 +53,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   using namespace railstab;
   SceneSpec spec;
   try {
-    spec = parse_scene(text, kSource);
+    spec = load_scene_text(text, kSource);
   } catch (const SceneError& e) {
     check_message(e.what(), text);
     return 0;

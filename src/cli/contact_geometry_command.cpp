@@ -6,7 +6,7 @@
 #include "cli/set_flag.hpp"
 #include <railstab/io/file_names.hpp>
 #include <railstab/io/output_set.hpp>
-#include <railstab/io/scene_loader.hpp>
+#include <railstab/setup/contact_tables.hpp>
 #include <railstab/report/contact_geometry_report.hpp>
 
 #include <filesystem>

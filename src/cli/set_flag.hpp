@@ -4,7 +4,7 @@
 // The form and the number are checked while parsing ("--set: expected a
 // finite number as the value of bodies.carbody.mass_kg, got 'abc'"); the key
 // when the scene is read.
-#include <railstab/io/scene_set_values.hpp>
+#include <railstab/scene_reading/scene_set_values.hpp>
 
 #include <CLI/CLI.hpp>
 

@@ -6,7 +6,8 @@
 #include <railstab/io/gnuplot.hpp>
 #include <railstab/io/output_set.hpp>
 #include <railstab/io/regular_file.hpp>
-#include <railstab/io/scene_loader.hpp>
+#include <railstab/scene_reading/load_scene.hpp>
+#include <railstab/setup/prepare_scene.hpp>
 #include <railstab/report/study_report.hpp>
 #include <railstab/study/study_record.hpp>
 
@@ -64,7 +65,11 @@ void run_study_command(const StudyArgs& a) {
   d.scene_hash = fnv1a64_hex(bytes);
   // Every key is checked before the first search: the scene with the fixed
   // values and each varied key at both ends of its range.
-  d.scene_name = load_scene_file(a.scene, d.fixed).name;
+  // Read and built as a run would (profile contact tables included), so that a
+  // bad profile file stops the study here, not in every row.
+  SceneOverrides fixed;
+  fixed.values = d.fixed;
+  d.scene_name = load_scene_with_overrides(a.scene, fixed).name;
   for (const VariedKey& v : d.varied)
     for (const double value : {v.from, v.to}) {
       std::vector<SceneValueSetting> s = d.fixed;

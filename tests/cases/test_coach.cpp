@@ -3,7 +3,8 @@
 // the yaw dampers' series stiffness says it must: a damper in series with a
 // spring k_s has the complex stiffness k_s c s / (k_s + c s), which tends to
 // the plain damper's c s as k_s -> infinity.
-#include <railstab/io/scene_loader.hpp>
+#include <railstab/scene_reading/load_scene.hpp>
+#include <railstab/scene_reading/scene_checker.hpp>
 #include <railstab/model/equations_of_motion.hpp>
 #include <railstab/setup/prepare_scene.hpp>
 #include <railstab/stability/speed_analysis.hpp>

@@ -3,7 +3,7 @@
 // each warning raised by a scene with that one mistake and none raised by
 // the thesis cases.
 #include <railstab/check/model_check.hpp>
-#include <railstab/io/scene_loader.hpp>
+#include <railstab/scene_reading/load_scene.hpp>
 #include <railstab/setup/prepare_scene.hpp>
 
 #include <gtest/gtest.h>
@@ -155,7 +155,7 @@ stiffness_N_per_m = [0.0, 0.0, 2.0e5]
 damping_N_s_per_m = [0.0, 0.0, 1.0e3]
 )";
   ModelCheckOptions options;
-  const ModelCheckReport r = check_scene(parse_scene(toml, "one_spring.toml"), options);
+  const ModelCheckReport r = check_scene(load_scene_text(toml, "one_spring.toml"), options);
   ASSERT_EQ(r.static_deflections.size(), 1u) << warning_list(r);
   const SpringDeflection& d = r.static_deflections[0];
   EXPECT_EQ(d.axis, "z");

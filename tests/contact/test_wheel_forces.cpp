@@ -10,7 +10,7 @@
 #include <railstab/contact/wheel_forces.hpp>
 #include <railstab/contact_geometry/profile_contact_geometry.hpp>
 #include <railstab/equilibrium/equilibrium.hpp>
-#include <railstab/io/scene_loader.hpp>
+#include <railstab/scene_reading/load_scene.hpp>
 #include <railstab/setup/build_model.hpp>
 
 #include <gtest/gtest.h>

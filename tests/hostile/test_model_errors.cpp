@@ -6,7 +6,7 @@
 // rails.
 #include <gtest/gtest.h>
 
-#include <railstab/io/scene_loader.hpp>
+#include <railstab/scene_reading/load_scene.hpp>
 #include <railstab/model/equations_of_motion.hpp>
 #include <railstab/setup/model_error_context.hpp>
 #include <railstab/setup/prepare_scene.hpp>
@@ -171,7 +171,7 @@ TEST(ModelErrors, PreloadSagWithoutSupportNamesTheBodyAndItsElements) {
     scene.replace(at, stiff.size(), "stiffness_N_per_m = [3.9e7, 7.85e6, 0.0]");
   std::string message;
   try {
-    prepare_scene(parse_scene(scene, "soft.toml"));
+    prepare_scene(load_scene_text(scene, "soft.toml"));
   } catch (const ModelError& e) {
     message = e.what();
   }

@@ -5,7 +5,7 @@
 // the key; e0 and D must agree; --arc-length is blamed on the flag.
 #include <gtest/gtest.h>
 
-#include <railstab/io/scene_loader.hpp>
+#include <railstab/scene_reading/load_scene.hpp>
 #include <railstab/scene/physical_ranges.hpp>
 #include <railstab/setup/prepare_scene.hpp>
 
@@ -39,7 +39,7 @@ std::string with(const std::string& original, const std::string& replacement) {
 
 std::string error_of(const std::string& text) {
   try {
-    parse_scene(text, kSource);
+    load_scene_text(text, kSource);
   } catch (const SceneError& e) {
     return e.what();
   }
@@ -119,7 +119,7 @@ TEST(SceneRanges, ValuesAtTheLimitsAreAccepted) {
   namespace r = physical_ranges;
   auto ok = [](const std::string& text) {
     try {
-      parse_scene(text, kSource);
+      load_scene_text(text, kSource);
       return std::string();
     } catch (const SceneError& e) {
       return std::string(e.what());

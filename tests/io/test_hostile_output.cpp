@@ -12,7 +12,7 @@
 #include <railstab/io/output_files.hpp>
 #include <railstab/io/output_set.hpp>
 #include <railstab/io/regular_file.hpp>
-#include <railstab/io/scene_loader.hpp>
+#include <railstab/scene_reading/load_scene.hpp>
 #include <railstab/model/model.hpp>
 #include <railstab/setup/build_model.hpp>
 #include <railstab/integrate/integrator.hpp>

@@ -3,7 +3,7 @@
 // file, the line where relevant and what was expected.
 #include <railstab/contact_geometry/rigid_contact.hpp>
 #include <railstab/contact_geometry/profile_contact_geometry.hpp>
-#include <railstab/io/scene_loader.hpp>
+#include <railstab/setup/contact_tables.hpp>
 #include <railstab/profiles/profile_readers.hpp>
 
 #include <gtest/gtest.h>

@@ -6,7 +6,7 @@
 //   tangent run's are not overwritten), and the JSON and the Markdown state
 //   the same track, cant deficiency, scene hash, version and critical speed.
 #include "cli/run_cli.hpp"
-#include <railstab/io/scene_loader.hpp>
+#include <railstab/scene_reading/load_scene.hpp>
 #include <railstab/io/sha256.hpp>
 #include <railstab/report/run_conditions.hpp>
 #include <railstab/setup/build_model.hpp>

@@ -11,7 +11,7 @@
 // tests/linear/test_jacobian_pattern.cpp (every scene in cases/).
 #include <railstab/eigen/eigen_analysis.hpp>
 #include <railstab/io/regular_file.hpp>
-#include <railstab/io/scene_loader.hpp>
+#include <railstab/scene_reading/load_scene.hpp>
 #include <railstab/linear/linearization.hpp>
 #include <railstab/scene/train.hpp>
 #include <railstab/setup/prepare_scene.hpp>
@@ -33,7 +33,7 @@ std::string case_path(const std::string& name) {
 std::string vehicle_text() { return read_regular_file(case_path("thesis_vehicle_tangent")); }
 
 SceneSpec vehicle_with_train(const std::string& train_section) {
-  return parse_scene(vehicle_text() + "\n" + train_section, "train_test.toml");
+  return load_scene_text(vehicle_text() + "\n" + train_section, "train_test.toml");
 }
 
 CriticalSpeedResult critical_speed(const PreparedScene& s) {
@@ -137,7 +137,7 @@ TEST(Train, BadTrainInputIsRefusedNamingTheKey) {
 }
 
 TEST(Train, MakeTrainNamesAndPlacesTheCars) {
-  const SceneSpec vehicle = parse_scene(vehicle_text(), "v.toml");
+  const SceneSpec vehicle = load_scene_text(vehicle_text(), "v.toml");
   TrainSpec t;
   t.cars = 3;
   t.car_spacing_m = 26.0;

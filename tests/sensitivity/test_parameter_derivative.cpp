@@ -8,7 +8,7 @@
 // equilibrium: the implicit-function terms).
 #include <railstab/eigen/eigen_analysis.hpp>
 #include <railstab/equilibrium/equilibrium.hpp>
-#include <railstab/io/scene_loader.hpp>
+#include <railstab/scene_reading/load_scene.hpp>
 #include <railstab/linear/linearization.hpp>
 #include <railstab/sensitivity/parameter_derivative.hpp>
 #include <railstab/setup/build_model.hpp>

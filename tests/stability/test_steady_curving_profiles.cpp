@@ -11,7 +11,7 @@
 #include <railstab/contact/wheel_forces.hpp>
 #include <railstab/equilibrium/equilibrium.hpp>
 #include <railstab/integrate/integrator.hpp>
-#include <railstab/io/scene_loader.hpp>
+#include <railstab/scene_reading/load_scene.hpp>
 #include <railstab/model/equations_of_motion.hpp>
 #include <railstab/model/workspace.hpp>
 #include <railstab/setup/build_model.hpp>
@@ -148,7 +148,7 @@ TEST(SteadyCurvingProfiles, TightCurveFlangeContactIsAnEquilibriumWithinNadal) {
   ASSERT_EQ(replace_all("end_radius_m = 1000.0", "end_radius_m = 300.0"), 1);
   ASSERT_EQ(replace_all("end_cant_m = 0.05", "end_cant_m = 0.15"), 2);
   ASSERT_EQ(replace_all("reference_arc_length_m = 100.0", "reference_arc_length_m = 2000.0"), 1);
-  const Model model = build_model(parse_scene(text, kScene));  // profiles relative to kScene
+  const Model model = build_model(load_scene_text(text, kScene));  // profiles relative to kScene
   const double V = 22.0, R = 300.0;
   const EquilibriumResult eq = solve_equilibrium(model, V, lowered_nominal_state(model, V));
 

@@ -46,11 +46,19 @@ Model assemble_model(const SceneSpec& scene, const std::vector<Eigen::Vector3d>&
   Model model(scene.track);
   model.name = scene.name;
   model.source_path = scene.source_path;
+  model.source_sha256 = scene.source_sha256;
   model.scene_speed_m_per_s = scene.speed_m_per_s;
   model.gravity_m_per_s2 = scene.gravity_m_per_s2;
   model.reference_arc_length_m = scene.reference_arc_length_m;
 
-  for (const ContactSpec& c : scene.contacts) model.contacts.push_back(make_model_contact(c));
+  for (const ContactSpec& c : scene.contacts) {
+    // The set-up step builds profile contact tables (setup/contact_tables.hpp).
+    if (c.geometry == ContactGeometryKind::profiles && !c.profile_geometry)
+      throw std::invalid_argument("assemble_model: contacts." + c.name +
+                                  ": geometry = \"profiles\" without its contact table (build_model "
+                                  "or build_contact_tables builds it)");
+    model.contacts.push_back(make_model_contact(c));
+  }
 
   for (const BodySpec& spec : scene.bodies) {
     Body body;

@@ -32,6 +32,7 @@ namespace railstab {
 template <class S> struct ModelTpl {
   std::string name;
   std::string source_path;
+  std::string source_sha256;  // of the scene file as read (SceneSpec::source_sha256)
   Track track;
   double scene_speed_m_per_s = 0.0;  // the scene's speed: the default of commands
   double gravity_m_per_s2 = 9.81;
@@ -100,6 +101,7 @@ template <class S> struct ModelTpl {
     ModelTpl<S2> m(track);
     m.name = name;
     m.source_path = source_path;
+    m.source_sha256 = source_sha256;
     m.scene_speed_m_per_s = scene_speed_m_per_s;
     m.gravity_m_per_s2 = gravity_m_per_s2;
     m.reference_arc_length_m = reference_arc_length_m;

@@ -106,11 +106,7 @@ bool all_bodies_on_tangent(const Model& model) {
 RunConditions run_conditions(const Model& model) {
   RunConditions c;
   c.scene_path = model.source_path;
-  try {
-    c.scene_sha256 = sha256_of_file(model.source_path);
-  } catch (const std::exception&) {
-    c.scene_sha256.clear();  // a scene parsed from text has no file to hash
-  }
+  c.scene_sha256 = model.source_sha256;  // taken when the file was read (empty from text)
   c.version = railstab_version();
   c.reference_arc_length_m = model.reference_arc_length_m;
   c.rail_contact_distance_m = model.track.spec().rail_contact_distance_m;

@@ -1,6 +1,6 @@
 #pragma once
 // The plausible range of every kind of number a scene file holds, in one
-// place. The scene reader (io/scene_loader.cpp) refuses a value outside its
+// place. The scene reader (scene_reading/) refuses a value outside its
 // range with the range in the message, e.g.
 //   "cases/x.toml: bodies[0].mass_kg: expected a mass in [0.1, 1e6] kg, got 1e-300".
 //
@@ -137,7 +137,7 @@ inline constexpr double kMaxOutputs = 1e6;
 
 // --- names ------------------------------------------------------------------------------
 // Scene, body, element and contact names: at most this many bytes, and no
-// control characters (see scene_loader.cpp, check_name, for why).
+// control characters (see scene_reading/scene_messages.cpp, name_problem, for why).
 inline constexpr size_t kMaxNameBytes = 100;
 
 }  // namespace physical_ranges

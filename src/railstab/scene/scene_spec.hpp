@@ -1,6 +1,7 @@
 #pragma once
 // The scene as data: what a scene file says, in SI units, before any model is
-// built. The loader (io/scene_loader) fills it and validates it; the model
+// built. The scene reader (scene_reading/load_scene.hpp) fills it and checks
+// it; the set-up step (setup/) builds the profile contact tables; the model
 // (model/model.hpp) is assembled from it. Nothing here computes physics.
 //
 // Frames and conventions (stated once, used everywhere):
@@ -50,9 +51,9 @@ struct ProfileSourceSpec {
   ProfilePairParameters placement;
   ContactTableOptions table;
 };
-// The placed pair and its contact table, built once when the scene is read
-// (contact_geometry/profile_contact_geometry.hpp) and shared, immutable, by
-// every model built from the scene.
+// The placed pair and its contact table, built once by the set-up step
+// (setup/contact_tables.hpp, contact_geometry/profile_contact_geometry.hpp)
+// and shared, immutable, by every model built from the scene.
 struct ProfileContactGeometry;
 enum class NormalForceKind { hertz, prescribed };
 enum class TangentialForceKind {
@@ -101,9 +102,11 @@ struct ContactSpec {
   double f23_N_m = 0.0;   // constant: lateral/spin
   double f33_N_m2 = 0.0;  // constant: spin
   // `creep_law`: linear_kalker (default, the thesis: no saturation),
-  // shen_hedrick_elkins or polach (saturate at mu N; keys in io/scene_loader).
+  // shen_hedrick_elkins or polach (saturate at mu N; keys in
+  // scene_reading/creep_law_reader.hpp).
   CreepLawSpec creep_law = LinearKalkerCreep<double>{};
-  // geometry = profiles (null otherwise).
+  // geometry = profiles: the files and options as read; the geometry is null
+  // until the set-up step has built it (and for other geometries).
   ProfileSourceSpec profile_source;
   std::shared_ptr<const ProfileContactGeometry> profile_geometry;
 };
@@ -150,6 +153,9 @@ struct SimulationSpec {
 struct SceneSpec {
   std::string name;
   std::string source_path;  // file it was read from, for messages
+  // SHA-256 of the file's bytes as read (before any --set), for reports;
+  // empty for a scene from text or built in code.
+  std::string source_sha256;
   double speed_m_per_s = 0.0;
   double gravity_m_per_s2 = 9.81;
   double reference_arc_length_m = 0.0;

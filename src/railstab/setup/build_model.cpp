@@ -2,6 +2,7 @@
 
 #include <railstab/equilibrium/equilibrium.hpp>
 #include <railstab/model/equations_of_motion.hpp>
+#include <railstab/setup/contact_tables.hpp>
 #include <railstab/setup/model_error_context.hpp>
 
 #include <algorithm>
@@ -65,6 +66,13 @@ std::vector<Eigen::Vector3d> solve_gravity_preloads(const SceneSpec& scene) {
 }
 
 Model build_model(const SceneSpec& scene) {
+  // A scene loaded by a caller (a test, a benchmark) rather than by
+  // prepare_scene may not have its profile contact tables yet.
+  if (lacks_contact_tables(scene)) {
+    SceneSpec with_tables = scene;
+    build_contact_tables(with_tables);
+    return build_model(with_tables);
+  }
   if (scene.preload == PreloadMode::balance_gravity_at_nominal)
     return assemble_model(scene, solve_gravity_preloads(scene));
   return assemble_model(scene);

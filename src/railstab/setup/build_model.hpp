@@ -18,6 +18,9 @@
 
 namespace railstab {
 
+// Builds the profile contact tables the scene lacks (setup/contact_tables.hpp)
+// on a copy; prepare_scene builds them into its scene first, so that models
+// built again from PreparedScene::spec share them.
 Model build_model(const SceneSpec& scene);
 
 // The same vehicle on straight, level track at the same speed.

@@ -1,8 +1,10 @@
 #include <railstab/setup/prepare_scene.hpp>
 
-#include <railstab/io/scene_loader.hpp>
 #include <railstab/model/equations_of_motion.hpp>
 #include <railstab/equilibrium/speed_continuation.hpp>
+#include <railstab/scene_reading/load_scene.hpp>
+#include <railstab/scene_reading/scene_checker.hpp>
+#include <railstab/setup/contact_tables.hpp>
 #include <railstab/setup/model_error_context.hpp>
 
 #include <algorithm>
@@ -43,14 +45,29 @@ void check_reference_override(const SceneSpec& spec, double reference_m) {
 }  // namespace
 
 SceneSpec load_scene_with_overrides(const std::string& path, const SceneOverrides& overrides) {
-  SceneSpec spec = load_scene_file(path, overrides.values);
-  if (overrides.speed_m_per_s) spec.speed_m_per_s = *overrides.speed_m_per_s;
-  if (overrides.t_end_s) spec.simulation.t_end_s = *overrides.t_end_s;
+  SceneSpec spec = load_scene_file(path, overrides.values);  // read and checked
+  try {
+    build_contact_tables(spec);
+  } catch (const SceneError& e) {
+    throw SceneError(std::string(e.what()) + settings_in_force(overrides.values));
+  }
+  // The run's own values replace the file's: only the checks they enter run
+  // again (the scene is checked once).
+  ReplacedSceneValues replaced;
+  if (overrides.speed_m_per_s) {
+    spec.speed_m_per_s = *overrides.speed_m_per_s;
+    replaced.speed = true;
+  }
+  if (overrides.t_end_s) {
+    spec.simulation.t_end_s = *overrides.t_end_s;
+    replaced.t_end = true;
+  }
   if (overrides.reference_arc_length_m) {
     check_reference_override(spec, *overrides.reference_arc_length_m);
     spec.reference_arc_length_m = *overrides.reference_arc_length_m;
+    replaced.reference_arc_length = true;
   }
-  validate_scene(spec);
+  validate_replaced_values(spec, replaced);
   return spec;
 }
 
@@ -92,6 +109,7 @@ EquilibriumResult steady_state_by_speed_ramp(const Model& model, double V,
 }  // namespace
 
 PreparedScene prepare_scene(SceneSpec spec) {
+  build_contact_tables(spec);  // into the spec: later models built from it share them
   Model model = build_model(spec);
   const double V = spec.speed_m_per_s;
   EquilibriumResult eq = with_model_context(model, {"steady state at t = 0", V}, [&] {

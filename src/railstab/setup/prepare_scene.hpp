@@ -1,11 +1,11 @@
 #pragma once
-// The first steps of every analysis: read the scene, apply overrides, build
-// the model (preloads solved in), solve the static/steady equilibrium at the
-// run's speed.
+// The first steps of every analysis: read the scene (checked once), apply
+// overrides, build the profile contact tables, build the model (preloads
+// solved in), solve the static/steady equilibrium at the run's speed.
 #include <railstab/equilibrium/equilibrium.hpp>
-#include <railstab/io/scene_set_values.hpp>
 #include <railstab/model/model.hpp>
 #include <railstab/scene/scene_spec.hpp>
+#include <railstab/scene_reading/scene_set_values.hpp>
 #include <railstab/setup/build_model.hpp>
 
 #include <optional>
@@ -20,7 +20,7 @@ struct SceneOverrides {
   // curving); the scene's reference_arc_length_m otherwise.
   std::optional<double> reference_arc_length_m;
   // --set KEY=VALUE, applied to the file's document before it is read
-  // (io/scene_set_values.hpp), in order.
+  // (scene_reading/scene_set_values.hpp), in order.
   std::vector<SceneValueSetting> values;
 };
 
@@ -32,9 +32,13 @@ struct PreparedScene {
 };
 
 PreparedScene prepare_scene(const std::string& path, const SceneOverrides& overrides);
-// The first step alone: the scene file read, the overrides applied, validated.
+// The first step alone: the scene file read with its --set values and
+// checked (load_scene_file), its contact tables built, then the run's
+// --speed, --t-end and --arc-length applied and checked (only the checks
+// those values enter: the rest of the scene was checked when read).
 SceneSpec load_scene_with_overrides(const std::string& path, const SceneOverrides& overrides);
-// The same from a scene already read (overrides applied by the caller).
+// The same from a scene already read and checked (overrides applied by the
+// caller); builds the contact tables it lacks.
 PreparedScene prepare_scene(SceneSpec spec);
 
 // Equilibrium state plus the scene's initial offsets and rates.

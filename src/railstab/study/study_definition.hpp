@@ -8,7 +8,7 @@
 //   index = sum_k i_k * prod_{j>k} n_j,   i_k in [0, n_k)
 // so a study's rows, its shards (index % N == I - 1) and its files do not
 // depend on how many threads or machines computed them.
-#include <railstab/io/scene_set_values.hpp>
+#include <railstab/scene_reading/scene_set_values.hpp>
 
 #include <cstddef>
 #include <string>

@@ -96,7 +96,7 @@ template <class S> struct PolachCreep {
   // Needs semi_axis_a_m, semi_axis_b_m > 0 when normal_force_N > 0.
   template <class T> CreepForces<T> forces(const CreepInput<T>& in) const;
   // f(scene key, -1, value&) for each parameter (sensitivity keys
-  // contacts.<name>.<scene key>; the scene keys of io/scene_loader).
+  // contacts.<name>.<scene key>; the scene keys of scene_reading/creep_law_reader).
   template <class F> void for_each_parameter(F&& f) {
     f("friction_coefficient", -1, friction_coefficient);
     f("kalker_reduction_factor", -1, kalker_reduction_factor);

@@ -1,6 +1,4 @@
-#include <railstab/io/scene_set_values.hpp>
-
-#include <railstab/io/scene_loader.hpp>
+#include <railstab/scene_reading/scene_set_values.hpp>
 
 #include <toml++/toml.h>
 
@@ -160,7 +158,7 @@ class SettingWriter {
         return descend(entry, at + 1, entry_where);
       }
     }
-    // A last key the table does not hold is added; the loader decides
+    // A last key the table does not hold is added; the reader decides
     // whether that table may have it.
     if (at + 1 == parts_.size() && node.is_table() && step && !step->index) {
       node.as_table()->insert_or_assign(step->key, setting_.value);
@@ -244,7 +242,7 @@ std::string scene_text_with_values(const std::string& toml_text, const std::stri
   try {
     root = toml::parse(std::string_view(toml_text), std::string_view(source_name));
   } catch (const toml::parse_error&) {
-    return toml_text;  // the loader reports the syntax error with its line and column
+    return toml_text;  // the reader reports the syntax error with its line and column
   }
   for (const SceneValueSetting& s : settings) {
     try {
@@ -261,17 +259,12 @@ std::string scene_text_with_values(const std::string& toml_text, const std::stri
   return text.str();
 }
 
-SceneSpec load_scene_file(const std::string& path, const std::vector<SceneValueSetting>& settings) {
-  if (settings.empty()) return load_scene_file(path);
-  const std::string changed = scene_text_with_values(read_scene_text(path), path, settings);
-  try {
-    return parse_scene(changed, path);
-  } catch (const SceneError& e) {
-    std::string in_force;
-    for (const SceneValueSetting& s : settings)
-      in_force += " " + (s.origin.empty() ? "--set " + setting_text(s) : s.origin);
-    throw SceneError(std::string(e.what()) + " (with" + in_force + ")");
-  }
+std::string settings_in_force(const std::vector<SceneValueSetting>& settings) {
+  if (settings.empty()) return "";
+  std::string in_force;
+  for (const SceneValueSetting& s : settings)
+    in_force += " " + (s.origin.empty() ? "--set " + setting_text(s) : s.origin);
+  return " (with" + in_force + ")";
 }
 
 }  // namespace railstab

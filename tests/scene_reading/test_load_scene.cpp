@@ -1,6 +1,8 @@
-// Scene files: a minimal valid scene parses to the expected values, each class
-// of mistake gives a SceneError naming the file, the key path and what was
-// expected, and every shipped case file loads.
+// Scene files (scene_reading/load_scene.hpp): a minimal valid scene parses to
+// the expected values, each class of mistake gives a SceneError naming the
+// file, the key path and what was expected, every shipped case file loads,
+// the scene carries the SHA-256 of the bytes read, and profile contacts are
+// only recorded (their tables are the set-up step's).
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -8,7 +10,10 @@
 #include <map>
 #include <string>
 
-#include <railstab/io/scene_loader.hpp>
+#include <railstab/io/sha256.hpp>
+#include <railstab/scene_reading/load_scene.hpp>
+#include <railstab/scene_reading/scene_checker.hpp>
+#include <railstab/setup/build_model.hpp>
 
 using namespace railstab;
 
@@ -122,7 +127,7 @@ std::string minimal_with(const std::string& original, const std::string& replace
 // Parses `text`, expecting a SceneError whose message contains every fragment.
 void expect_scene_error(const std::string& text, std::initializer_list<std::string> fragments) {
   try {
-    parse_scene(text, kSource);
+    load_scene_text(text, kSource);
     ADD_FAILURE() << "expected a SceneError, the scene parsed";
   } catch (const SceneError& error) {
     const std::string message = error.what();
@@ -150,7 +155,7 @@ const Element& element_named(const SceneSpec& scene, const std::string& name) {
 // --- A valid scene -------------------------------------------------------------
 
 TEST(SceneLoader, MinimalSceneParsesToExpectedValues) {
-  const SceneSpec scene = parse_scene(kMinimalScene, kSource);
+  const SceneSpec scene = load_scene_text(kMinimalScene, kSource);
   EXPECT_EQ(scene.name, "minimal");
   EXPECT_EQ(scene.source_path, kSource);
   EXPECT_DOUBLE_EQ(scene.speed_m_per_s, 20.0);
@@ -218,16 +223,16 @@ TEST(SceneLoader, MinimalSceneParsesToExpectedValues) {
 }
 
 TEST(SceneLoader, ClothoidTurningRightOrGivenByCurvature) {
-  const SceneSpec right = parse_scene(minimal_with("turn = \"left\"", "turn = \"right\""), kSource);
+  const SceneSpec right = load_scene_text(minimal_with("turn = \"left\"", "turn = \"right\""), kSource);
   EXPECT_DOUBLE_EQ(right.track.segments[1].end_curvature_per_m, -1.0 / 1000.0);
-  const SceneSpec by_curvature = parse_scene(
+  const SceneSpec by_curvature = load_scene_text(
       minimal_with("end_radius_m = 1000.0\nturn = \"left\"", "end_curvature_per_m = 0.002"),
       kSource);
   EXPECT_DOUBLE_EQ(by_curvature.track.segments[1].end_curvature_per_m, 0.002);
 }
 
 TEST(SceneLoader, OptionalContactKeysForOtherModelsAreAccepted) {
-  const SceneSpec scene = parse_scene(
+  const SceneSpec scene = load_scene_text(
       minimal_with("cone_angle_rad = 0.12", "cone_angle_rad = 0.12\nconicity = 0.2\nf11_N = 1.0"),
       kSource);
   EXPECT_DOUBLE_EQ(scene.contacts[0].conicity, 0.2);
@@ -396,11 +401,11 @@ TEST(SceneLoader, ZeroSpeedWithoutCreepForcesIsAllowed) {
   const std::string at_rest =
       replaced(minimal_with("tangential = \"kalker_hertz\"", "tangential = \"none\""),
                "speed_m_per_s = 20.0", "speed_m_per_s = 0.0");
-  EXPECT_DOUBLE_EQ(parse_scene(at_rest, kSource).speed_m_per_s, 0.0);
+  EXPECT_DOUBLE_EQ(load_scene_text(at_rest, kSource).speed_m_per_s, 0.0);
 }
 
 TEST(SceneLoader, ValidateSceneCatchesCommandLineOverride) {
-  SceneSpec scene = parse_scene(kMinimalScene, kSource);
+  SceneSpec scene = load_scene_text(kMinimalScene, kSource);
   scene.speed_m_per_s = -5.0;
   try {
     validate_scene(scene);
@@ -454,12 +459,12 @@ TEST(SceneLoader, SimulationTimesMustBePositive) {
 }
 
 TEST(SceneLoader, IntegratorChoiceAndOrder) {
-  const SceneSpec scene = parse_scene(
+  const SceneSpec scene = load_scene_text(
       minimal_with("t_end_s = 5.0", "t_end_s = 5.0\nintegrator = \"cvode_bdf\"\nintegrator_order = 2"),
       kSource);
   EXPECT_EQ(scene.simulation.integrator, IntegratorKind::cvode_bdf);
   EXPECT_EQ(scene.simulation.integrator_order, 2);
-  EXPECT_EQ(parse_scene(kMinimalScene, kSource).simulation.integrator,
+  EXPECT_EQ(load_scene_text(kMinimalScene, kSource).simulation.integrator,
             IntegratorKind::arkode_dirk);  // the default
   expect_scene_error(minimal_with("t_end_s = 5.0", "t_end_s = 5.0\nintegrator = \"cvode_bfd\""),
                      {"simulation.integrator", "one of", "'cvode_bdf'", "got 'cvode_bfd'"});
@@ -509,6 +514,30 @@ TEST(SceneLoader, EveryCaseFileLoadsWithTheExpectedBodyCount) {
   EXPECT_GE(files_seen, expected_body_counts.size());
 }
 
+// The hash is taken once, from the bytes read (reports use it, not the file
+// as it is after the analysis); --set does not change it; text has none.
+TEST(SceneLoader, SceneCarriesTheHashOfTheBytesRead) {
+  const std::string path = std::string(RAILSTAB_CASES_DIR) + "/textbook_wheelset.toml";
+  const std::string sha = sha256_of_file(path);
+  const SceneSpec scene = load_scene_file(path);
+  EXPECT_EQ(scene.source_sha256, sha);
+  EXPECT_EQ(build_model(scene).source_sha256, sha);
+  EXPECT_EQ(load_scene_file(path, {{"bodies.wheelset1.mass_kg", 1600.0}}).source_sha256, sha);
+  EXPECT_TRUE(load_scene_text(read_scene_text(path), path).source_sha256.empty());
+}
+
+// The reader records a profile contact's files and grid; it reads no
+// profile and builds no table (setup/contact_tables.hpp does).
+TEST(SceneLoader, ProfileContactIsRecordedNotBuilt) {
+  const SceneSpec scene =
+      load_scene_file(std::string(RAILSTAB_CASES_DIR) + "/thesis_bogie_s1002_tangent.toml");
+  ASSERT_FALSE(scene.contacts.empty());
+  const ContactSpec& contact = scene.contacts[0];
+  EXPECT_EQ(contact.geometry, ContactGeometryKind::profiles);
+  EXPECT_NE(contact.profile_source.wheel_profile_path.find(".prw"), std::string::npos);
+  EXPECT_FALSE(contact.profile_geometry);
+}
+
 TEST(SceneLoader, ThesisVehicleCaseHasMirroredSuspension) {
   const SceneSpec scene =
       load_scene_file(std::string(RAILSTAB_CASES_DIR) + "/thesis_vehicle_curve.toml");
@@ -519,7 +548,7 @@ TEST(SceneLoader, ThesisVehicleCaseHasMirroredSuspension) {
 }
 
 TEST(SceneLoader, CreepLawIsReadWithItsFrictionCoefficient) {
-  const SceneSpec scene = parse_scene(
+  const SceneSpec scene = load_scene_text(
       minimal_with("tangential = \"kalker_hertz\"",
                    "tangential = \"kalker_hertz\"\ncreep_law = \"shen_hedrick_elkins\"\n"
                    "friction_coefficient = 0.35\nkalker_reduction_factor = 0.6"),
@@ -529,7 +558,7 @@ TEST(SceneLoader, CreepLawIsReadWithItsFrictionCoefficient) {
   EXPECT_EQ(she->friction_coefficient, 0.35);
   EXPECT_EQ(she->kalker_reduction_factor, 0.6);
   // Default: linear Kalker without reduction (the thesis).
-  const SceneSpec plain = parse_scene(minimal_with("", ""), kSource);
+  const SceneSpec plain = load_scene_text(minimal_with("", ""), kSource);
   const auto* lin = std::get_if<LinearKalkerCreep<double>>(&plain.contacts[0].creep_law);
   ASSERT_NE(lin, nullptr);
   EXPECT_EQ(lin->kalker_reduction_factor, 1.0);

@@ -6,8 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <railstab/io/regular_file.hpp>
-#include <railstab/io/scene_loader.hpp>
-#include <railstab/io/scene_set_values.hpp>
+#include <railstab/scene_reading/load_scene.hpp>
+#include <railstab/scene_reading/scene_set_values.hpp>
 #include <railstab/sensitivity/parameter_derivative.hpp>
 #include <railstab/setup/prepare_scene.hpp>
 #include <railstab/stability/speed_analysis.hpp>
@@ -89,7 +89,7 @@ TEST(SceneSetValues, EqualsEditingTheFile) {
   edited.replace(edited.find(from), from.size(), to);
   const std::string mass_from = "mass_kg = 1500.0", mass_to = "mass_kg = 1234.5";
   edited.replace(edited.find(mass_from), mass_from.size(), mass_to);
-  const SceneSpec by_file = parse_scene(edited, kTextbook);
+  const SceneSpec by_file = load_scene_text(edited, kTextbook);
   const SceneSpec by_set = load_scene_file(
       kTextbook, {{"contacts.textbook_linear.conicity", 0.15}, {"bodies.wheelset1.mass_kg", 1234.5}});
   const double v_file = critical_speed_of(by_file), v_set = critical_speed_of(by_set);

@@ -3,8 +3,8 @@
 // path, without copying the file.
 //
 // The value is written into the parsed TOML document, and the document is
-// then read by the scene loader exactly as a file the user had edited: every
-// check and every message stays the loader's (a mass set to -3 reads
+// then read by the scene reader exactly as a file the user had edited: every
+// check and every message stays the reader's (a mass set to -3 reads
 // "bodies[0].mass_kg: expected a positive number (kg), got -3"), and nothing
 // here knows which keys a scene has or what their ranges are.
 //
@@ -18,8 +18,9 @@
 // mirrored element is one scene entry: its key moves both halves). A name
 // holding '.' is found too (the longest name that fits is taken). A last key
 // the table does not hold is added (an optional key at its default, e.g. a
-// friction coefficient); the loader refuses it if that table has no such key.
+// friction coefficient); the reader refuses it if that table has no such key.
 #include <railstab/scene/scene_spec.hpp>
+#include <railstab/scene_reading/scene_error.hpp>
 
 #include <string>
 #include <string_view>
@@ -54,8 +55,8 @@ std::string number_text_exact(double value);
 std::string scene_text_with_values(const std::string& toml_text, const std::string& source_name,
                                    const std::vector<SceneValueSetting>& settings);
 
-// load_scene_file with the settings applied; a loader error then also says
-// which settings were in force.
-SceneSpec load_scene_file(const std::string& path, const std::vector<SceneValueSetting>& settings);
+// " (with --set KEY=VALUE ...)": what a reader's message says after its
+// text when settings were in force (each by its origin if it has one).
+std::string settings_in_force(const std::vector<SceneValueSetting>& settings);
 
 }  // namespace railstab

@@ -1,0 +1,99 @@
+#include <railstab/scene_reading/profile_source_reader.hpp>
+
+#include <railstab/io/regular_file.hpp>
+
+#include <string>
+#include <utility>
+
+namespace railstab::scene_reading {
+
+namespace {
+
+// Keys of the flangeless models that the profiles replace.
+const std::vector<std::string_view> kFlangelessKeys = {
+    "cone_angle_rad", "conicity", "half_contact_distance_m", "rail_head_transverse_radius_m",
+    "flange_clearance_m"};
+
+// One of KEY (a SIMPACK .prw/.prr file, unit from its header), KEY_mm or
+// KEY_m (plain two-column text in that unit); the path relative to the scene.
+void read_profile_file_key(const TableReader& contact, const std::string& key, std::string& path,
+                           LengthUnit& unit) {
+  int found = 0;
+  for (const auto& [suffix, u] : {std::pair<std::string, LengthUnit>{"", LengthUnit::millimetre},
+                                  {"_mm", LengthUnit::millimetre},
+                                  {"_m", LengthUnit::metre}}) {
+    const std::string k = key + suffix;
+    if (!contact.has(k)) continue;
+    ++found;
+    path = contact.text(k);
+    unit = u;
+    const auto ends_with = [&](const char* ext) {
+      return path.size() >= 4 && path.compare(path.size() - 4, 4, ext) == 0;
+    };
+    if (suffix.empty() && !ends_with(".prw") && !ends_with(".prr"))
+      contact.fail(k, "a SIMPACK .prw/.prr file (a plain-text profile names its unit: " + key +
+                          "_mm or " + key + "_m)",
+                   quoted(path));
+  }
+  if (found != 1)
+    contact.fail(key, "exactly one of " + key + " (SIMPACK), " + key + "_mm or " + key +
+                          "_m (plain text)",
+                 found == 0 ? std::string(kMissingKey) : std::to_string(found) + " of them");
+  path = path_relative_to_file(contact.source(), path);
+}
+
+ProfileSourceSpec read_profile_source(const TableReader& contact) {
+  ProfileSourceSpec s;
+  read_profile_file_key(contact, "wheel_profile", s.wheel_profile_path, s.wheel_unit);
+  read_profile_file_key(contact, "rail_profile", s.rail_profile_path, s.rail_unit);
+  ProfilePairParameters& p = s.placement;
+  p.track_gauge_m = contact.number_or("track_gauge_m", "m", p.track_gauge_m);
+  p.gauge_measuring_height_m =
+      contact.number_or("gauge_measuring_height_m", "m", p.gauge_measuring_height_m);
+  p.flange_back_distance_m =
+      contact.number_or("flange_back_distance_m", "m", p.flange_back_distance_m);
+  p.rail_inclination_rad = contact.number_or("rail_inclination_rad", "rad", p.rail_inclination_rad);
+  p.tape_circle_from_flange_back_m =
+      contact.number_or("tape_circle_from_flange_back_m", "m", p.tape_circle_from_flange_back_m);
+  ContactTableOptions& t = s.table;
+  auto in_range = [&](std::string_view key, std::string_view unit, double fallback, double lo,
+                      double hi) {
+    const double v = contact.number_or(key, unit, fallback);
+    if (!(v >= lo && v <= hi))
+      contact.fail(key, "a number in [" + format_number(lo) + ", " + format_number(hi) + "] " +
+                            std::string(unit),
+                   format_number(v));
+    return v;
+  };
+  t.lateral_half_range_m = in_range("table_lateral_half_range_m", "m", t.lateral_half_range_m, 0.002, 0.03);
+  t.lateral_step_m = in_range("table_lateral_step_m", "m", t.lateral_step_m, 2e-5, 1e-3);
+  t.roll_half_range_rad = in_range("table_roll_half_range_rad", "rad", t.roll_half_range_rad, 0.002, 0.1);
+  t.roll_step_rad = in_range("table_roll_step_rad", "rad", t.roll_step_rad, 1e-4, 0.02);
+  return s;
+}
+
+}  // namespace
+
+// geometry = "profiles": the keys of the profile files, their placement and
+// the contact table's grid (contact_geometry/profile_contact_geometry.hpp).
+const std::vector<std::string_view>& profile_keys() {
+  static const std::vector<std::string_view> keys = {
+      "wheel_profile", "wheel_profile_mm", "wheel_profile_m", "rail_profile", "rail_profile_mm",
+      "rail_profile_m", "track_gauge_m", "gauge_measuring_height_m", "flange_back_distance_m",
+      "rail_inclination_rad", "tape_circle_from_flange_back_m", "table_lateral_half_range_m",
+      "table_lateral_step_m", "table_roll_half_range_rad", "table_roll_step_rad"};
+  return keys;
+}
+
+void read_profile_contact(const TableReader& contact, ContactSpec& spec) {
+  for (std::string_view key : kFlangelessKeys)
+    contact.reject_if_present(key, "no " + std::string(key) +
+                                       " with geometry = \"profiles\" (the profiles define it)");
+  if (spec.normal != NormalForceKind::hertz)
+    contact.fail("normal", "\"hertz\" with geometry = \"profiles\" (the normal force follows "
+                           "from the penetration at each contact point)",
+                 "another normal force model");
+  spec.profile_source = read_profile_source(contact);
+}
+
+}  // namespace railstab::scene_reading

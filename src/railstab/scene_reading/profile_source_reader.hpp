@@ -1,0 +1,23 @@
+#pragma once
+// geometry = "profiles" in a [contacts.<name>] table: which wheel and rail
+// profile files, how they are placed, and the grid of the contact table
+// (contact_geometry/profile_contact_geometry.hpp). Only recorded here: the
+// files are read and the table built by the set-up step
+// (setup/contact_tables.hpp), not while the scene is read.
+#include <railstab/scene/scene_spec.hpp>
+#include <railstab/scene_reading/table_reader.hpp>
+
+#include <string_view>
+#include <vector>
+
+namespace railstab::scene_reading {
+
+// The keys of a profile contact, for the contact table's declaration.
+const std::vector<std::string_view>& profile_keys();
+
+// Reads spec.profile_source (the file paths resolved against the scene's
+// folder) and refuses the keys of the flangeless models and a normal force
+// other than Hertz.
+void read_profile_contact(const TableReader& contact, ContactSpec& spec);
+
+}  // namespace railstab::scene_reading

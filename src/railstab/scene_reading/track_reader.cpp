@@ -1,0 +1,92 @@
+#include <railstab/scene_reading/track_reader.hpp>
+
+#include <railstab/scene/physical_ranges.hpp>
+
+namespace railstab::scene_reading {
+
+namespace {
+
+const Choices<TrackSegmentKind> kSegmentKinds = {{"tangent", TrackSegmentKind::tangent},
+                                                 {"clothoid", TrackSegmentKind::clothoid},
+                                                 {"arc", TrackSegmentKind::arc}};
+const Choices<double> kTurnSigns = {{"left", +1.0}, {"right", -1.0}};
+
+double read_clothoid_end_curvature(const TableReader& segment) {
+  const bool by_radius = segment.has("end_radius_m");
+  const bool by_curvature = segment.has("end_curvature_per_m");
+  if (by_radius == by_curvature)
+    segment.fail_here(
+        "exactly one of end_radius_m (with turn) and end_curvature_per_m for a clothoid",
+        by_radius ? "both" : "neither");
+  if (by_curvature) {
+    segment.reject_if_present(
+        "turn", "no turn with end_curvature_per_m (its sign is the direction: > 0 turns left)");
+    return segment.number("end_curvature_per_m", "1/m");
+  }
+  const double radius = segment.number("end_radius_m", "m");
+  if (!physical_ranges::curve_radius_m.contains(radius))
+    segment.fail("end_radius_m",
+                 range_text(physical_ranges::curve_radius_m) +
+                     " (end_curvature_per_m = 0 ends a curve)",
+                 format_number(radius));
+  return segment.choice("turn", kTurnSigns) / radius;
+}
+
+void reject_clothoid_keys(const TableReader& segment, std::string_view kind) {
+  for (std::string_view key : {"end_radius_m", "turn", "end_curvature_per_m"})
+    segment.reject_if_present(
+        key, "no " + std::string(key) + " on " + std::string(kind) +
+                 " (only a clothoid sets its end curvature; an arc keeps the one it starts with)");
+}
+
+TrackSegmentSpec read_segment(const TableReader& segment, double start_curvature_per_m,
+                              double start_cant_m) {
+  TrackSegmentSpec spec;
+  spec.kind = segment.choice("type", kSegmentKinds);
+  spec.length_m = segment.number("length_m", "m");
+  spec.end_cant_m = segment.number_or("end_cant_m", "m", start_cant_m);
+  switch (spec.kind) {
+    case TrackSegmentKind::tangent:
+      reject_clothoid_keys(segment, "a tangent segment");
+      spec.end_curvature_per_m = 0.0;
+      break;
+    case TrackSegmentKind::arc:
+      reject_clothoid_keys(segment, "an arc segment");
+      spec.end_curvature_per_m = start_curvature_per_m;
+      break;
+    case TrackSegmentKind::clothoid:
+      spec.end_curvature_per_m = read_clothoid_end_curvature(segment);
+      break;
+  }
+  return spec;
+}
+
+}  // namespace
+
+TrackSpec read_track(const TableReader& top) {
+  const TableReader track = top.table(
+      "track", {"start_x_m", "start_y_m", "start_z_m", "start_heading_rad", "start_curvature_per_m",
+                "start_cant_m", "rail_contact_distance_m", "segments"});
+  TrackSpec spec;
+  spec.start_x_m = track.number_or("start_x_m", "m", spec.start_x_m);
+  spec.start_y_m = track.number_or("start_y_m", "m", spec.start_y_m);
+  spec.start_z_m = track.number_or("start_z_m", "m", spec.start_z_m);
+  spec.start_heading_rad = track.number_or("start_heading_rad", "rad", spec.start_heading_rad);
+  spec.start_curvature_per_m =
+      track.number_or("start_curvature_per_m", "1/m", spec.start_curvature_per_m);
+  spec.start_cant_m = track.number_or("start_cant_m", "m", spec.start_cant_m);
+  spec.rail_contact_distance_m =
+      track.number_or("rail_contact_distance_m", "m", spec.rail_contact_distance_m);
+  double curvature = spec.start_curvature_per_m;
+  double cant = spec.start_cant_m;
+  for (const TableReader& segment : track.tables_in_array(
+           "segments",
+           {"type", "length_m", "end_cant_m", "end_radius_m", "turn", "end_curvature_per_m"})) {
+    spec.segments.push_back(read_segment(segment, curvature, cant));
+    curvature = spec.segments.back().end_curvature_per_m;
+    cant = spec.segments.back().end_cant_m;
+  }
+  return spec;
+}
+
+}  // namespace railstab::scene_reading
