@@ -1,5 +1,6 @@
 #include "cli/check_command.hpp"
 
+#include "cli/scene_command.hpp"
 #include <railstab/check/model_check.hpp>
 #include "cli/numeric_flags.hpp"
 #include "cli/set_flag.hpp"
@@ -17,10 +18,7 @@ namespace railstab {
 
 namespace {
 
-struct CheckArgs {
-  std::string scene;
-  SceneOverrides overrides;
-  std::string out_dir = "out";
+struct CheckArgs : SceneCommandArgs {
   bool natural_frequencies = true;
 };
 
@@ -35,7 +33,7 @@ void run_check(const CheckArgs& a) {
   outputs.write(stem + ".json", [&](std::ostream& out) { write_model_check_json(out, r); });
   const std::vector<std::string> written = outputs.commit();
   print_model_check_summary(std::cout, r);
-  for (const std::string& f : written) std::cout << "wrote " << f << "\n";
+  list_written(written, std::cout);
   if (!r.errors.empty()) {
     std::ostringstream msg;
     msg << "model check of " << r.scene << ": " << r.errors.size()
@@ -51,15 +49,11 @@ void register_check_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "check", "model checks before a run: masses, axle loads, static deflections, natural "
                "frequencies at rest, warnings for the usual input mistakes");
-  cmd->add_option("scene", a->scene, "scene file (TOML)")->required()->check(CLI::ExistingFile);
-  add_set_flag(cmd, a->overrides.values);
-  cmd->add_option("--speed", a->overrides.speed_m_per_s,
-                  "speed V in m/s of the equilibrium the axle loads are taken at")
-      ->check(finite_in(flag_ranges::speed_m_per_s));
-  cmd->add_option("--arc-length", a->overrides.reference_arc_length_m,
-                  "arc length (m) of the reference point at t = 0")
-      ->check(finite_in(flag_ranges::arc_length_m));
-  cmd->add_option("--out", a->out_dir, "output directory")->capture_default_str();
+  SceneFlags flags;
+  flags.speed = flags.arc_length = true;
+  flags.speed_help = "speed V in m/s of the equilibrium the axle loads are taken at";
+  flags.arc_length_help = "arc length (m) of the reference point at t = 0";
+  add_scene_flags(cmd, *a, flags);
   cmd->add_flag("!--no-frequencies", a->natural_frequencies,
                 "skip the natural frequencies at rest (one equilibrium and eigen-analysis less)");
   cmd->callback([a] { run_check(*a); });

@@ -1,6 +1,6 @@
 #include "cli/modes_command.hpp"
 
-#include "cli/model_warnings.hpp"
+#include "cli/scene_command.hpp"
 #include <railstab/report/run_conditions.hpp>
 #include "cli/numeric_flags.hpp"
 #include "cli/set_flag.hpp"
@@ -9,6 +9,7 @@
 #include <railstab/io/output_set.hpp>
 #include <railstab/report/mode_plot.hpp>
 #include <railstab/setup/prepare_scene.hpp>
+#include <railstab/stability/point_mode_shapes.hpp>
 #include <railstab/stability/speed_analysis.hpp>
 
 #include <algorithm>
@@ -20,10 +21,7 @@ namespace railstab {
 
 namespace {
 
-struct ModesArgs {
-  std::string scene;
-  SceneOverrides overrides;
-  std::string out_dir = "out";
+struct ModesArgs : SceneCommandArgs {
   double max_frequency_hz = 20.0;
   int count = 6;
   std::vector<std::string> names;  // substrings of mode names to draw
@@ -31,8 +29,7 @@ struct ModesArgs {
 
 void run_modes(const ModesArgs& a) {
   require_gnuplot();
-  const PreparedScene s = prepare_scene(a.scene, a.overrides);
-  print_model_warnings_to_stderr(s);
+  const PreparedScene s = prepare_command_scene(a);
   StabilityOptions opt;
   opt.max_frequency_hz = a.max_frequency_hz;
   SpeedStability stability(s.model, s.equilibrium.state, s.speed_m_per_s, opt);
@@ -58,14 +55,15 @@ void run_modes(const ModesArgs& a) {
                                  : std::string(" whose name contains a --mode text")));
   if (int(chosen.size()) > a.count) chosen.resize(size_t(a.count));
   OutputSet outputs(a.out_dir);
-  write_mode_plots(s.model, p, chosen, outputs, steady_state_file_stem(s.model));
+  write_mode_plots(s.model, p, full_mode_shapes(s.model, p), chosen, outputs,
+                   steady_state_file_stem(s.model));
   std::cout << s.model.name << " at " << p.speed_m_per_s << " m/s, modes drawn:\n";
   for (int i : chosen) {
     const ModeReport& m = p.modes[size_t(i)];
     std::cout << "  " << m.frequency_hz << " Hz, damping ratio " << m.damping_ratio << ": "
               << m.name << "\n";
   }
-  for (const std::string& f : outputs.commit()) std::cout << "wrote " << f << "\n";
+  list_written(outputs.commit(), std::cout);
 }
 
 }  // namespace
@@ -76,13 +74,11 @@ void register_modes_command(CLI::App& app) {
       "modes", "plan-view plots (PNG, SVG, animated GIF) of the mode shapes at one speed: "
                "lateral and yaw of every body at four phases; by default the lateral-plane modes, "
                "least damped first");
-  cmd->add_option("scene", a->scene, "scene file (TOML)")->required()->check(CLI::ExistingFile);
-  add_set_flag(cmd, a->overrides.values);
-  cmd->add_option("--speed", a->overrides.speed_m_per_s, "speed V in m/s")
-      ->check(finite_in(flag_ranges::speed_m_per_s));
-  cmd->add_option("--arc-length", a->overrides.reference_arc_length_m,
-                  "arc length (m) of the scene's reference point")
-      ->check(finite_in(flag_ranges::arc_length_m));
+  SceneFlags flags;
+  flags.speed = flags.arc_length = true;
+  flags.speed_help = "speed V in m/s";
+  flags.arc_length_help = "arc length (m) of the scene's reference point";
+  add_scene_flags(cmd, *a, flags);
   cmd->add_option("--max-frequency", a->max_frequency_hz, "draw modes up to this frequency (Hz)")
       ->capture_default_str()
       ->check(finite_in(flag_ranges::frequency_hz));
@@ -91,7 +87,6 @@ void register_modes_command(CLI::App& app) {
       ->check(CLI::Range(1, 100));
   cmd->add_option("--mode", a->names,
                   "draw only modes whose name contains this text (repeatable), e.g. hunting");
-  cmd->add_option("--out", a->out_dir, "output directory")->capture_default_str();
   cmd->callback([a] { run_modes(*a); });
 }
 

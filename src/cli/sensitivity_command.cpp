@@ -1,6 +1,6 @@
 #include "cli/sensitivity_command.hpp"
 
-#include "cli/model_warnings.hpp"
+#include "cli/scene_command.hpp"
 #include "cli/numeric_flags.hpp"
 #include "cli/set_flag.hpp"
 #include <railstab/io/file_names.hpp>
@@ -19,22 +19,17 @@ namespace railstab {
 
 namespace {
 
-struct SensitivityArgs {
-  std::string scene;
-  SceneOverrides overrides;
+struct SensitivityArgs : SceneCommandArgs {
   std::vector<std::string> keys;
   double from_m_per_s = 5.0, to_m_per_s = 150.0, step_m_per_s = 2.5;
   double hunting_band_hz = 20.0;
   std::size_t top = 20;
-  std::string out_dir = "out";
-  bool plots = true;
 };
 
 void run_sensitivity(const SensitivityArgs& a) {
   check_speed_grid(a.from_m_per_s, a.to_m_per_s, a.step_m_per_s);
   if (a.plots) require_gnuplot();
-  const PreparedScene s = prepare_scene(a.scene, a.overrides);
-  print_model_warnings_to_stderr(s);
+  const PreparedScene s = prepare_command_scene(a);
   const std::vector<std::string> known = parameter_keys(s.spec);
   for (const std::string& k : a.keys)
     if (std::find(known.begin(), known.end(), k) == known.end())
@@ -72,7 +67,7 @@ void run_sensitivity(const SensitivityArgs& a) {
   write_sensitivity_results(sens, c, outputs, file_stem(s.spec.name), a.plots);
   const std::vector<std::string> written = outputs.commit();
   print_sensitivity_summary(std::cout, sens, c, 10);
-  for (const std::string& f : written) std::cout << "wrote " << f << "\n";
+  list_written(written, std::cout);
 }
 
 }  // namespace
@@ -84,8 +79,9 @@ void register_sensitivity_command(CLI::App& app) {
       "d(critical speed)/dp for every named suspension, body and contact parameter, from the exact "
       "eigenvalue derivative and the implicit function theorem; ranked CSV, JSON, Markdown and a "
       "tornado plot");
-  cmd->add_option("scene", a->scene, "scene file (TOML)")->required()->check(CLI::ExistingFile);
-  add_set_flag(cmd, a->overrides.values);
+  SceneFlags flags;
+  flags.plots = true;
+  add_scene_flags(cmd, *a, flags);
   cmd->add_option("--key", a->keys, "only these parameters (repeatable; default: all)")
       ->expected(1)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
@@ -102,8 +98,6 @@ void register_sensitivity_command(CLI::App& app) {
       ->capture_default_str()
       ->check(finite_in(flag_ranges::frequency_hz));
   cmd->add_option("--top", a->top, "bars in the tornado plot")->capture_default_str()->check(CLI::Range(1, 200));
-  cmd->add_option("--out", a->out_dir, "output directory")->capture_default_str();
-  cmd->add_flag("!--no-plots", a->plots, "do not run gnuplot");
   cmd->callback([a] { run_sensitivity(*a); });
 }
 

@@ -1,6 +1,6 @@
 #include "cli/simulate_command.hpp"
 
-#include "cli/model_warnings.hpp"
+#include "cli/scene_command.hpp"
 #include "cli/numeric_flags.hpp"
 #include "cli/set_flag.hpp"
 #include <railstab/setup/prepare_scene.hpp>
@@ -10,10 +10,10 @@
 #include <railstab/io/csv.hpp>
 #include <railstab/io/file_names.hpp>
 #include <railstab/io/gnuplot.hpp>
-#include <railstab/io/json_writer.hpp>
 #include <railstab/io/output_files.hpp>
 #include <railstab/io/output_set.hpp>
 #include <railstab/model/equations_of_motion.hpp>
+#include <railstab/report/simulation_report.hpp>
 #include <railstab/report/time_plots.hpp>
 
 #include <chrono>
@@ -27,13 +27,9 @@ namespace railstab {
 
 namespace {
 
-struct SimulateArgs {
-  std::string scene;
-  SceneOverrides overrides;
+struct SimulateArgs : SceneCommandArgs {
   double t_end = 0.0;
   std::string csv;
-  std::string out_dir = "out";
-  bool plots = true;
   std::string integrator;  // label, e.g. "cvode_bdf_q2"; empty: the scene's
   std::optional<double> rtol, atol;
   bool estimate_error = true;
@@ -53,64 +49,9 @@ IntegrationOptions integration_options(const SimulateArgs& args, const Simulatio
   return opt;
 }
 
-// The run summary as JSON text, rendered before any file is written so a
-// failure here leaves no partial set of outputs.
-std::string run_json(const Model& model, double speed_m_per_s, const IntegrationOptions& opt, const Trajectory& traj,
-                     const std::optional<ErrorEstimate>& error) {
-  std::ostringstream out;
-  JsonWriter j(out);
-  const double simulated = traj.times_s.back() - opt.t_start_s;
-  j.begin_object()
-      .field("scene", model.name)
-      .field("speed_m_s", speed_m_per_s)
-      .field("states", model.state_size())
-      .field("integrator", IntegratorVariant{opt.kind, opt.order}.label())
-      .field("relative_tolerance", opt.relative_tolerance)
-      .field("absolute_tolerance", opt.absolute_tolerance)
-      .field("simulated_s", simulated)
-      .field("wall_seconds", traj.stats.wall_seconds)
-      .field("cpu_seconds", traj.stats.cpu_seconds);
-  j.key("real_time_factor");
-  if (simulated > 0.0 && traj.stats.wall_seconds > 0.0)
-    j.value(simulated / traj.stats.wall_seconds);
-  else
-    j.null();
-  j.field("steps", int(traj.stats.steps))
-      .field("rhs_evaluations", int(traj.stats.rhs_evaluations))
-      .field("jacobian_evaluations", int(traj.stats.jacobian_evaluations))
-      .field("stopped_early", traj.stopped_early);
-  j.key("contact_events").begin_array();
-  for (const ContactEvent& e : traj.events) j.value(e.description);
-  j.end_array();
-  j.key("error_estimate");
-  if (!error) {
-    j.null();
-  } else {
-    j.begin_object().field("method", "difference to the same run at " +
-                                         std::to_string(int(error->tightening)) +
-                                         "x tighter tolerances, at the output times both reached");
-    if (!error->available) {
-      j.field("available", false).field("reason", error->reason);
-    } else {
-      j.field("available", true)
-          .field("position_error", error->position_error)
-          .field("position_error_at", error->where)
-          .field("lateral_error", error->lateral_error)
-          .field("compared_outputs", error->compared_outputs)
-          .field("reference_end_s", error->reference_end_s)
-          .field("reference_stopped_early", error->reference_stopped_early)
-          .field("reference_wall_seconds", error->wall_seconds);
-    }
-    j.end_object();
-  }
-  j.end_object();
-  return out.str();
-}
-
 void run_simulate(const SimulateArgs& args) {
   if (args.plots) require_gnuplot();  // before the run, not after it
-  PreparedScene scene = prepare_scene(args.scene, args.overrides);
-  print_model_warnings_to_stderr(scene);
+  PreparedScene scene = prepare_command_scene(args);
   const Model& model = scene.model;
   std::cerr << "scene " << model.name << ": " << model.bodies.size() << " bodies, "
             << model.state_size() << " states, speed " << scene.speed_m_per_s << " m/s\n"
@@ -137,7 +78,7 @@ void run_simulate(const SimulateArgs& args) {
   // All files are staged and committed together (io/output_set.hpp): data
   // files, run summary, then the plots, which are views of the CSVs.
   const std::string stem = file_stem(model.name) + "_" + speed_file_tag(scene.speed_m_per_s);
-  const std::string summary = run_json(model, scene.speed_m_per_s, opt, traj, error);
+  const std::string summary = simulation_run_json(model, scene.speed_m_per_s, opt, traj, error);
   OutputSet outputs(args.out_dir);
   for (const std::string& name : time_plot_file_names(stem)) outputs.replaces(name);
   PlottedCsv trajectory_csv, roll_csv;
@@ -160,7 +101,7 @@ void run_simulate(const SimulateArgs& args) {
   if (args.plots)
     plot_time_histories(model, scene.speed_m_per_s, outputs, stem, trajectory_csv, roll_csv, opt.t_start_s,
                         traj.times_s.back());
-  for (const std::string& f : outputs.commit()) std::cout << "wrote " << f << "\n";
+  list_written(outputs.commit(), std::cout);
   const double simulated = traj.times_s.back() - opt.t_start_s;
   std::cout << "integrator " << IntegratorVariant{opt.kind, opt.order}.label() << " rtol "
             << opt.relative_tolerance << " atol " << opt.absolute_tolerance << ": "
@@ -191,14 +132,12 @@ void run_simulate(const SimulateArgs& args) {
 void register_simulate_command(CLI::App& app) {
   auto args = std::make_shared<SimulateArgs>();
   CLI::App* cmd = app.add_subcommand("simulate", "integrate the nonlinear model in time");
-  cmd->add_option("scene", args->scene, "scene file (TOML)")->required()->check(CLI::ExistingFile);
-  add_set_flag(cmd, args->overrides.values);
-  cmd->add_option("--speed", args->overrides.speed_m_per_s, "speed V in m/s (overrides the scene)")
-      ->check(finite_in(flag_ranges::speed_m_per_s));
+  SceneFlags flags;
+  flags.speed = flags.plots = true;
+  add_scene_flags(cmd, *args, flags);
   cmd->add_option("--t-end", args->overrides.t_end_s, "end time in s (overrides the scene)")
       ->check(finite_in(flag_ranges::t_end_s));
   cmd->add_option("--csv", args->csv, "CSV output file (default OUT/<scene>_<V>mps.csv)");
-  cmd->add_option("--out", args->out_dir, "output directory")->capture_default_str();
   cmd->add_option("--integrator", args->integrator,
                   "cvode_bdf, cvode_adams, arkode_erk, arkode_dirk or arkode_imex; _qN sets the "
                   "(maximum) order, e.g. cvode_bdf_q2 (default: the scene's [simulation] "
@@ -212,7 +151,6 @@ void register_simulate_command(CLI::App& app) {
   cmd->add_flag("--stop-on-lift-off", args->stop_on_lift_off,
                 "stop at the first wheel that loses contact (otherwise lift-offs are listed and "
                 "the run goes on)");
-  cmd->add_flag("!--no-plots", args->plots, "do not run gnuplot");
   cmd->callback([args] { run_simulate(*args); });
 }
 

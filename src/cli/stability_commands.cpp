@@ -1,6 +1,6 @@
 #include "cli/stability_commands.hpp"
 
-#include "cli/model_warnings.hpp"
+#include "cli/scene_command.hpp"
 #include <railstab/report/run_conditions.hpp>
 #include "cli/numeric_flags.hpp"
 #include "cli/set_flag.hpp"
@@ -9,6 +9,7 @@
 #include <railstab/io/gnuplot.hpp>
 #include <railstab/io/output_set.hpp>
 #include <railstab/report/eigen_report.hpp>
+#include <railstab/stability/point_mode_shapes.hpp>
 #include <railstab/report/equilibrium_report.hpp>
 #include <railstab/report/stability_report.hpp>
 #include <railstab/stability/speed_analysis.hpp>
@@ -20,23 +21,17 @@ namespace railstab {
 
 namespace {
 
-struct CommonArgs {
-  std::string scene;
-  SceneOverrides overrides;
-  std::string out_dir = "out";
+struct CommonArgs : SceneCommandArgs {
   std::string solver = "auto";
   double hunting_band_hz = 20.0;
-  bool plots = true;
 };
 
-void add_common(CLI::App* cmd, CommonArgs& a) {
-  cmd->add_option("scene", a.scene, "scene file (TOML)")->required()->check(CLI::ExistingFile);
-  add_set_flag(cmd, a.overrides.values);
-  cmd->add_option("--arc-length", a.overrides.reference_arc_length_m,
-                  "arc length (m) of the scene's reference point, e.g. inside an arc for "
-                  "steady curving")
-      ->check(finite_in(flag_ranges::arc_length_m));
-  cmd->add_option("--out", a.out_dir, "output directory")->capture_default_str();
+// equilibrium and eigen: at one speed, anywhere on the track.
+SceneFlags speed_and_arc_length() {
+  SceneFlags flags;
+  flags.speed = flags.arc_length = true;
+  flags.speed_help = "speed V in m/s";
+  return flags;
 }
 
 void add_solver(CLI::App* cmd, CommonArgs& a) {
@@ -45,7 +40,7 @@ void add_solver(CLI::App* cmd, CommonArgs& a) {
                   "shift-invert on a sparse LU at several shifts), arpack (the 16 modes nearest "
                   "one shift) or auto (dense below " +
                       std::to_string(kSparseFromStates) + " states, sparse from there)")
-      ->check(CLI::IsMember({"auto", "dense", "sparse", "arpack"}))
+      ->check(CLI::IsMember(eigen_solver_names()))
       ->capture_default_str();
   cmd->add_option("--hunting-band", a.hunting_band_hz,
                   "highest mode frequency (Hz) that decides stability; faster unstable modes "
@@ -56,10 +51,7 @@ void add_solver(CLI::App* cmd, CommonArgs& a) {
 
 StabilityOptions stability_options(const CommonArgs& a) {
   StabilityOptions o;
-  o.solver = a.solver == "arpack"   ? EigenSolverKind::arpack
-             : a.solver == "dense"  ? EigenSolverKind::dense
-             : a.solver == "sparse" ? EigenSolverKind::sparse
-                                    : EigenSolverKind::automatic;
+  o.solver = eigen_solver_from_name(a.solver);
   o.max_frequency_hz = a.hunting_band_hz;
   return o;
 }
@@ -72,32 +64,29 @@ std::string stem_for(const Model& m) { return steady_state_file_stem(m); }
 
 // --- equilibrium ---------------------------------------------------------------
 void run_equilibrium(const CommonArgs& a) {
-  const PreparedScene s = prepare_scene(a.scene, a.overrides);
-  print_model_warnings_to_stderr(s);
+  const PreparedScene s = prepare_command_scene(a);
   OutputSet outputs(a.out_dir);
   const std::string summary = write_equilibrium_results(s, outputs, stem_for(s.model));
   std::cout << summary;
-  for (const std::string& f : outputs.commit()) std::cout << "wrote " << f << "\n";
+  list_written(outputs.commit(), std::cout);
 }
 
 // --- eigen ---------------------------------------------------------------------
 void run_eigen(const CommonArgs& a, double max_hz) {
-  const PreparedScene s = prepare_scene(a.scene, a.overrides);
-  print_model_warnings_to_stderr(s);
+  const PreparedScene s = prepare_command_scene(a);
   SpeedStability stability(s.model, s.equilibrium.state, s.speed_m_per_s, stability_options(a));
   const StabilityPoint p = stability.at(s.speed_m_per_s);
   print_eigen_summary(std::cout, s.model, p, max_hz);
   OutputSet outputs(a.out_dir);
-  write_eigen_json(s.model, p, outputs, stem_for(s.model));
-  for (const std::string& f : outputs.commit()) std::cout << "wrote " << f << "\n";
+  write_eigen_json(s.model, p, full_mode_shapes(s.model, p), outputs, stem_for(s.model));
+  list_written(outputs.commit(), std::cout);
 }
 
 // --- critical speed / sweep -----------------------------------------------------------
 void run_critical_speed(const CommonArgs& a, CriticalSpeedOptions opt) {
   check_speed_grid(opt.from_m_per_s, opt.to_m_per_s, opt.grid_step_m_per_s);
   if (a.plots) require_gnuplot();  // before the sweep, not after it
-  const PreparedScene s = prepare_scene(a.scene, a.overrides);
-  print_model_warnings_to_stderr(s);
+  const PreparedScene s = prepare_command_scene(a);
   opt.stability = stability_options(a);
   opt.progress = [](const std::string& line) { std::cerr << line << "\n"; };
   std::cerr << "critical speed of " << s.model.name << " between " << opt.from_m_per_s
@@ -106,10 +95,11 @@ void run_critical_speed(const CommonArgs& a, CriticalSpeedOptions opt) {
   const std::string solver =
       r.grid.empty() ? a.solver : eigen_solver_name(r.grid.front().solver_used);
   OutputSet outputs(a.out_dir);
-  write_stability_results(s.model, r, outputs, stem_for(s.model), solver, a.plots);
+  write_stability_results(s.model, r, outputs, stem_for(s.model), solver, a.plots,
+                          opt.stability.max_frequency_hz);
   const std::vector<std::string> written = outputs.commit();
   print_critical_speed_summary(std::cout, s.model, r, opt.stability.max_frequency_hz);
-  for (const std::string& f : written) std::cout << "wrote " << f << "\n";
+  list_written(written, std::cout);
 }
 
 }  // namespace
@@ -119,19 +109,15 @@ void register_stability_commands(CLI::App& app) {
     auto a = std::make_shared<CommonArgs>();
     CLI::App* cmd = app.add_subcommand(
         "equilibrium", "steady rolling / curving equilibrium: offsets, wheel loads, creepages");
-    add_common(cmd, *a);
-    cmd->add_option("--speed", a->overrides.speed_m_per_s, "speed V in m/s")
-        ->check(finite_in(flag_ranges::speed_m_per_s));
+    add_scene_flags(cmd, *a, speed_and_arc_length());
     cmd->callback([a] { run_equilibrium(*a); });
   }
   {
     auto a = std::make_shared<CommonArgs>();
     auto max_hz = std::make_shared<double>(30.0);
     CLI::App* cmd = app.add_subcommand("eigen", "eigenvalues and modes at one speed");
-    add_common(cmd, *a);
+    add_scene_flags(cmd, *a, speed_and_arc_length());
     add_solver(cmd, *a);
-    cmd->add_option("--speed", a->overrides.speed_m_per_s, "speed V in m/s")
-        ->check(finite_in(flag_ranges::speed_m_per_s));
     cmd->add_option("--max-frequency", *max_hz, "list modes up to this frequency (Hz)")
         ->capture_default_str()
         ->check(finite_in(flag_ranges::list_frequency_hz));
@@ -149,7 +135,10 @@ void register_stability_commands(CLI::App& app) {
                    "report"
                  : "critical (hunting) speed: speed grid, then bisection to 0.01 m/s; JSON, "
                    "Markdown report and plots");
-    add_common(cmd, *a);
+    SceneFlags flags;
+    flags.arc_length = flags.plots = true;
+    flags.plots_help = "do not run gnuplot (data, JSON and report only)";
+    add_scene_flags(cmd, *a, flags);
     add_solver(cmd, *a);
     cmd->add_option("--from", opt->from_m_per_s, "lowest speed (m/s)")
         ->capture_default_str()
@@ -164,7 +153,6 @@ void register_stability_commands(CLI::App& app) {
                     "also report the lowest speed where a mode in the hunting band has a damping "
                     "ratio below this (e.g. 0.05), bisected like the critical speed")
         ->check(finite_in(flag_ranges::damping_ratio));
-    cmd->add_flag("!--no-plots", a->plots, "do not run gnuplot (data, JSON and report only)");
     cmd->callback([a, opt] { run_critical_speed(*a, *opt); });
   }
 }

@@ -9,6 +9,7 @@
 #include <railstab/scene_reading/load_scene.hpp>
 #include <railstab/setup/prepare_scene.hpp>
 #include <railstab/report/study_report.hpp>
+#include <railstab/stability/speed_analysis.hpp>
 #include <railstab/study/study_record.hpp>
 
 #include <filesystem>
@@ -171,8 +172,9 @@ void register_study_commands(CLI::App& app) {
     cmd->add_option("--step", a->analysis.grid_step_m_per_s, "speed grid step (m/s)")
         ->capture_default_str()
         ->check(finite_in(flag_ranges::speed_step_m_per_s));
-    cmd->add_option("--solver", a->analysis.solver, "eigen-solver: dense, arpack or auto")
-        ->check(CLI::IsMember({"auto", "dense", "arpack"}))
+    cmd->add_option("--solver", a->analysis.solver,
+                    "eigen-solver: auto, dense, sparse or arpack (as critical-speed --solver)")
+        ->check(CLI::IsMember(eigen_solver_names()))
         ->capture_default_str();
     cmd->add_option("--hunting-band", a->analysis.hunting_band_hz,
                     "highest mode frequency (Hz) that decides stability")

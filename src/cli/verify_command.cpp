@@ -1,6 +1,6 @@
 #include "cli/verify_command.hpp"
 
-#include "cli/model_warnings.hpp"
+#include "cli/scene_command.hpp"
 #include <railstab/report/run_conditions.hpp>
 #include "cli/numeric_flags.hpp"
 #include "cli/set_flag.hpp"
@@ -20,14 +20,10 @@ namespace railstab {
 
 namespace {
 
-struct VerifyArgs {
-  std::string scene;
-  SceneOverrides overrides;
+struct VerifyArgs : SceneCommandArgs {
   VerificationOptions options;
   std::string json;
-  std::string out_dir = "out";
   bool scene_offsets = false;
-  bool plots = true;
 };
 
 void run_verify(const VerifyArgs& a) {
@@ -38,8 +34,7 @@ void run_verify(const VerifyArgs& a) {
     throw std::invalid_argument(msg.str());
   }
   if (a.plots) require_gnuplot();
-  const PreparedScene s = prepare_scene(a.scene, a.overrides);
-  print_model_warnings_to_stderr(s);
+  const PreparedScene s = prepare_command_scene(a);
   std::cerr << "verify " << s.model.name << " at " << s.speed_m_per_s
             << " m/s: eigen-analysis, then two time-domain runs (tolerance and 100x tighter)\n";
   VerificationOptions options = a.options;
@@ -56,7 +51,7 @@ void run_verify(const VerifyArgs& a) {
   if (a.plots) write_verification_plot(r, outputs, stem, s.model);
   const std::vector<std::string> written = outputs.commit();
   print_verification_summary(std::cout, s.model, r);
-  for (const std::string& f : written) std::cout << "wrote " << f << "\n";
+  list_written(written, std::cout);
 }
 
 }  // namespace
@@ -66,13 +61,12 @@ void register_verify_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "verify", "time-domain check of the least stable mode: fitted rate and frequency against "
                 "the eigenvalue");
-  cmd->add_option("scene", a->scene, "scene file (TOML)")->required()->check(CLI::ExistingFile);
-  add_set_flag(cmd, a->overrides.values);
-  cmd->add_option("--speed", a->overrides.speed_m_per_s, "speed V in m/s")
-      ->check(finite_in(flag_ranges::speed_m_per_s));
-  cmd->add_option("--arc-length", a->overrides.reference_arc_length_m,
-                  "arc length (m) of the reference point at t = 0")
-      ->check(finite_in(flag_ranges::arc_length_m));
+  SceneFlags flags;
+  flags.speed = flags.arc_length = flags.plots = true;
+  flags.speed_help = "speed V in m/s";
+  flags.arc_length_help = "arc length (m) of the reference point at t = 0";
+  flags.plots_help = "do not run gnuplot (JSON only)";
+  add_scene_flags(cmd, *a, flags);
   cmd->add_option("--amplitude", a->options.amplitude_m,
                   "initial lateral amplitude (m) of the body that moves most laterally (with "
                   "--any-mode: of the fitted coordinate, in its unit)")
@@ -93,8 +87,6 @@ void register_verify_command(CLI::App& app) {
                 "start from the scene's initial offsets and rates instead of the mode "
                 "perturbation (e.g. the thesis cases' 1 mm offset of wheelset1)");
   cmd->add_option("--json", a->json, "JSON output (default OUT/<scene>_verify_<V>mps.json)");
-  cmd->add_option("--out", a->out_dir, "output directory")->capture_default_str();
-  cmd->add_flag("!--no-plots", a->plots, "do not run gnuplot (JSON only)");
   cmd->callback([a] { run_verify(*a); });
 }
 

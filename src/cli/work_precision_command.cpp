@@ -1,6 +1,6 @@
 #include "cli/work_precision_command.hpp"
 
-#include "cli/model_warnings.hpp"
+#include "cli/scene_command.hpp"
 #include "cli/numeric_flags.hpp"
 #include "cli/set_flag.hpp"
 #include <railstab/setup/prepare_scene.hpp>
@@ -17,14 +17,10 @@ namespace railstab {
 
 namespace {
 
-struct WorkPrecisionArgs {
-  std::string scene;
-  SceneOverrides overrides;
-  std::string out_dir = "out";
+struct WorkPrecisionArgs : SceneCommandArgs {
   double budget_s = 5.0;
   std::vector<std::string> integrators;  // labels; empty: all
   std::vector<double> rtols;             // empty: the default ladder
-  bool plots = true;
 };
 
 std::vector<IntegratorVariant> selected_variants(const std::vector<std::string>& labels) {
@@ -36,8 +32,7 @@ std::vector<IntegratorVariant> selected_variants(const std::vector<std::string>&
 
 void run_work_precision_command(const WorkPrecisionArgs& args) {
   if (args.plots) require_gnuplot();
-  const PreparedScene scene = prepare_scene(args.scene, args.overrides);
-  print_model_warnings_to_stderr(scene);
+  const PreparedScene scene = prepare_command_scene(args);
   const Model& model = scene.model;
   const double speed_m_per_s = scene.speed_m_per_s;
   WorkPrecisionSettings s;
@@ -62,7 +57,7 @@ void run_work_precision_command(const WorkPrecisionArgs& args) {
     write_work_precision_markdown(out, model, speed_m_per_s, s, r);
   });
   if (args.plots) write_work_precision_plot(outputs, stem, model, speed_m_per_s, s.t_end_s, r);
-  for (const std::string& f : outputs.commit()) std::cout << "wrote " << f << "\n";
+  list_written(outputs.commit(), std::cout);
 }
 
 }  // namespace
@@ -71,14 +66,12 @@ void register_work_precision_command(CLI::App& app) {
   auto args = std::make_shared<WorkPrecisionArgs>();
   CLI::App* cmd = app.add_subcommand(
       "work-precision", "compare the integrators: error against CPU time over a range of tolerances");
-  cmd->add_option("scene", args->scene, "scene file (TOML)")->required()->check(CLI::ExistingFile);
-  add_set_flag(cmd, args->overrides.values);
-  cmd->add_option("--speed", args->overrides.speed_m_per_s, "speed V in m/s (overrides the scene)")
-      ->check(finite_in(flag_ranges::speed_m_per_s));
+  SceneFlags flags;
+  flags.speed = flags.plots = true;
+  add_scene_flags(cmd, *args, flags);
   cmd->add_option("--t-end", args->overrides.t_end_s,
                   "end time in s (overrides the scene; 5 s keeps the study near a minute)")
       ->check(finite_in(flag_ranges::t_end_s));
-  cmd->add_option("--out", args->out_dir, "output directory")->capture_default_str();
   cmd->add_option("--budget", args->budget_s, "CPU seconds per run before giving up")
       ->capture_default_str()
       ->check(finite_in(flag_ranges::cpu_budget_s));
@@ -91,7 +84,6 @@ void register_work_precision_command(CLI::App& app) {
                   "relative tolerances, loose to tight (default 1e-3,...,1e-8; atol = 1e-3 rtol)")
       ->delimiter(',')
       ->check(finite_in(flag_ranges::relative_tolerance));
-  cmd->add_flag("!--no-plots", args->plots, "do not run gnuplot");
   cmd->callback([args] { run_work_precision_command(*args); });
 }
 

@@ -3,7 +3,7 @@
 // keeps its name over the grid and at the bisection point, body roles come
 // from the topology; the damping-ratio criterion is bisected like the real
 // part and lies below the critical speed.
-#include <railstab/report/mode_shape_report.hpp>
+#include <railstab/stability/point_mode_shapes.hpp>
 #include <railstab/setup/prepare_scene.hpp>
 #include <railstab/stability/mode_names.hpp>
 #include <railstab/stability/speed_analysis.hpp>

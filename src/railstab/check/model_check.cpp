@@ -152,20 +152,7 @@ template <class E> void add_deflections(const E& e, ModelCheckReport& r) {
     if (!(k > 0.0) || std::abs(preload) < 1e-3) return;
     r.static_deflections.push_back({name, E::kType, axis, unit, preload, k, preload / k});
   };
-  static const char* xyz[3] = {"x", "y", "z"};
-  if constexpr (std::is_same_v<E, SpringDamper3d<double>>) {
-    for (int i = 0; i < 3; ++i) add(xyz[i], "m", e.preload_N(i), e.stiffness_N_per_m(i));
-  } else if constexpr (std::is_same_v<E, RotationalSpringDamper<double>>) {
-    static const char* rpy[3] = {"roll", "pitch", "yaw"};
-    for (int i = 0; i < 3; ++i) add(rpy[i], "rad", e.preload_N_m(i), e.stiffness_N_m_per_rad(i));
-  } else if constexpr (std::is_same_v<E, LineSpringDamper<double>>) {
-    add("line", "m", e.preload_N, e.spring.slope_at_zero());
-  } else if constexpr (std::is_same_v<E, TractionRod<double>>) {
-    add("line", "m", e.preload_N, e.stiffness_N_per_m);
-  } else if constexpr (std::is_same_v<E, AntiRollBar<double>>) {
-    add("twist", "rad", e.preload_N_m, e.roll_stiffness_N_m_per_rad);
-  }
-  // series_spring_damper and bump_stop carry no preload (their headers).
+  e.for_each_preloaded_axis(add);
 }
 
 void check_elements(const Model& model, const ModelCheckLimits& L, ModelCheckReport& r) {

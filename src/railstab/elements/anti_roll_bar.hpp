@@ -54,6 +54,11 @@ template <class S> struct AntiRollBar {
     return Vec3<T>(lift<T>(roll_stiffness_N_m_per_rad) * twist(links(a1, a2)), T(0), T(0));
   }
   void set_preload(const Vec3<S>& load) { preload_N_m = load.x(); }
+  // The preload on each preloaded axis and the axis's stiffness, for the
+  // model check's static deflections: f(axis, unit, preload, stiffness).
+  template <class F> void for_each_preloaded_axis(F&& f) const {
+    f("twist", "rad", value_of(preload_N_m), value_of(roll_stiffness_N_m_per_rad));
+  }
   template <class F> void for_each_parameter(F&& f) {
     f("roll_stiffness_N_m_per_rad", -1, roll_stiffness_N_m_per_rad);
   }

@@ -40,6 +40,8 @@ template <class S> struct BumpStop {
     return Vec3<T>::Zero();
   }
   void set_preload(const Vec3<S>&) {}
+  // No preload (it acts only beyond its clearance): no static deflection.
+  template <class F> void for_each_preloaded_axis(F&&) const {}
   template <class F> void for_each_parameter(F&& f) {
     f("clearance_m", -1, clearance_m);
     f("stiffness_N_per_m", -1, stiffness_N_per_m);

@@ -1,13 +1,14 @@
 #pragma once
 // The force elements of a model: one type per kind, one variant. Every
-// operation on elements (equations of motion, energy, preloads, state names)
-// is a std::visit over this variant, so adding a kind is its own header plus
-// its entry here and its reader in io/element_readers.cpp; the compiler
-// then checks that the kind provides everything those visits call:
-//   kType, kInternalStates, kInGravitySag, ends, set_nominal, elastic_load, set_preload,
-//   apply<T>, potential, internal_state_name, for_each_parameter, cast<S2>.
+// operation on elements (equations of motion, energy, preloads, static
+// deflections, state and parameter names) is a std::visit over this variant
+// calling a member of the kind, so adding a kind is its own header plus its
+// entry here and its reader beside the other element readers; the compiler
+// checks that every kind provides the members (ForceElement,
+// elements/force_element_concept.hpp).
 #include <railstab/elements/anti_roll_bar.hpp>
 #include <railstab/elements/bump_stop.hpp>
+#include <railstab/elements/force_element_concept.hpp>
 #include <railstab/elements/line_spring_damper.hpp>
 #include <railstab/elements/rotational_spring_damper.hpp>
 #include <railstab/elements/series_spring_damper.hpp>
@@ -22,6 +23,9 @@ template <class S>
 using ElementTpl = std::variant<SpringDamper3d<S>, RotationalSpringDamper<S>, SeriesSpringDamper<S>,
                                 LineSpringDamper<S>, BumpStop<S>, TractionRod<S>,
                                 AntiRollBar<S>>;
+
+static_assert(assert_force_elements<double>(std::type_identity<ElementTpl<double>>{}));
+static_assert(assert_force_elements<ParamDual>(std::type_identity<ElementTpl<ParamDual>>{}));
 
 template <class S> const ElementEnds& ends_of(const ElementTpl<S>& e) {
   return std::visit([](const auto& x) -> const ElementEnds& { return x.ends; }, e);

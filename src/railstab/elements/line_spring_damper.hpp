@@ -34,6 +34,11 @@ template <class S> struct LineSpringDamper {
     return Vec3<T>(spring.force(e), T(0), T(0));
   }
   void set_preload(const Vec3<S>& load) { preload_N = load.x(); }
+  // The preload on each preloaded axis and the axis's stiffness, for the
+  // model check's static deflections: f(axis, unit, preload, stiffness).
+  template <class F> void for_each_preloaded_axis(F&& f) const {
+    f("line", "m", value_of(preload_N), spring.slope_at_zero());
+  }
   template <class F> void for_each_parameter(F&& f) {
     if (!spring.is_table) f("stiffness_N_per_m", -1, spring.coefficient);
     if (!damper.is_table) f("damping_N_s_per_m", -1, damper.coefficient);

@@ -32,6 +32,13 @@ template <class S> struct RotationalSpringDamper {
     return lift<T>(stiffness_N_m_per_rad).cwiseProduct(rotation_vector<T>(R_12));
   }
   void set_preload(const Vec3<S>& load) { preload_N_m = load; }
+  // The preload on each preloaded axis and the axis's stiffness, for the
+  // model check's static deflections: f(axis, unit, preload, stiffness).
+  template <class F> void for_each_preloaded_axis(F&& f) const {
+    static const char* const rpy[3] = {"roll", "pitch", "yaw"};
+    for (int i = 0; i < 3; ++i)
+      f(rpy[i], "rad", value_of(preload_N_m(i)), value_of(stiffness_N_m_per_rad(i)));
+  }
   template <class F> void for_each_parameter(F&& f) {
     for (int i = 0; i < 3; ++i) {
       f("stiffness_N_m_per_rad", i, stiffness_N_m_per_rad(i));

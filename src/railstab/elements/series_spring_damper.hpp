@@ -48,6 +48,8 @@ template <class S> struct SeriesSpringDamper {
     return Vec3<T>::Zero();
   }
   void set_preload(const Vec3<S>&) {}
+  // No preload (a damper carries no static load): no static deflection.
+  template <class F> void for_each_preloaded_axis(F&&) const {}
   template <class F> void for_each_parameter(F&& f) {
     f("series_stiffness_N_per_m", -1, series_stiffness_N_per_m);
     if (!damper.is_table) {

@@ -38,6 +38,13 @@ template <class S> struct SpringDamper3d {
     return lift<T>(stiffness_N_per_m).cwiseProduct(d - to_scalar<T>(free_vector_m));
   }
   void set_preload(const Vec3<S>& load) { preload_N = load; }
+  // The preload on each preloaded axis and the axis's stiffness, for the
+  // model check's static deflections: f(axis, unit, preload, stiffness).
+  template <class F> void for_each_preloaded_axis(F&& f) const {
+    static const char* const xyz[3] = {"x", "y", "z"};
+    for (int i = 0; i < 3; ++i)
+      f(xyz[i], "m", value_of(preload_N(i)), value_of(stiffness_N_per_m(i)));
+  }
   template <class F> void for_each_parameter(F&& f) {
     for (int i = 0; i < 3; ++i) {
       f("stiffness_N_per_m", i, stiffness_N_per_m(i));

@@ -36,6 +36,11 @@ template <class S> struct TractionRod {
     return Vec3<T>(lift<T>(stiffness_N_per_m) * e, T(0), T(0));
   }
   void set_preload(const Vec3<S>& load) { preload_N = load.x(); }
+  // The preload on each preloaded axis and the axis's stiffness, for the
+  // model check's static deflections: f(axis, unit, preload, stiffness).
+  template <class F> void for_each_preloaded_axis(F&& f) const {
+    f("line", "m", value_of(preload_N), value_of(stiffness_N_per_m));
+  }
   template <class F> void for_each_parameter(F&& f) {
     f("stiffness_N_per_m", -1, stiffness_N_per_m);
     f("damping_N_s_per_m", -1, damping_N_s_per_m);

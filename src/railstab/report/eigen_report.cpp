@@ -6,11 +6,16 @@
 #include <railstab/report/run_conditions.hpp>
 
 #include <iomanip>
+#include <stdexcept>
 
 namespace railstab {
 
-void write_eigen_json(const Model& model, const StabilityPoint& p, OutputSet& outputs,
+void write_eigen_json(const Model& model, const StabilityPoint& p,
+                      const std::vector<ModeShape>& shapes, OutputSet& outputs,
                       const std::string& stem) {
+  if (shapes.size() != p.modes.size())
+    throw std::invalid_argument("write_eigen_json: " + std::to_string(shapes.size()) +
+                                " mode shapes for " + std::to_string(p.modes.size()) + " modes");
   outputs.write(stem + "_eigen_" + speed_file_tag(p.speed_m_per_s) + ".json",
                 [&](std::ostream& out) {
     JsonWriter j(out);
@@ -20,7 +25,6 @@ void write_eigen_json(const Model& model, const StabilityPoint& p, OutputSet& ou
     j.key("removed_cyclic_states").begin_array();
     for (const std::string& r : p.linear.removed_states) j.value(r);
     j.end_array().key("modes").begin_array();
-    const std::vector<ModeShape> shapes = full_mode_shapes(model, p);
     for (size_t i = 0; i < p.modes.size(); ++i) {
       const ModeReport& m = p.modes[i];
       j.begin_object()

@@ -7,13 +7,16 @@
 
 #include <ostream>
 #include <string>
+#include <vector>
 
 namespace railstab {
 
 // Adds <stem>_eigen_<V>mps.json (every mode: eigenvalue, frequency, damping
 // ratio, residual, name, shape with energy shares: report/mode_shape_report.hpp)
-// to `outputs` (staged; the caller commits).
-void write_eigen_json(const Model& model, const StabilityPoint& p, OutputSet& outputs,
+// to `outputs` (staged; the caller commits). `shapes`: one per p.modes
+// (stability/point_mode_shapes.hpp full_mode_shapes).
+void write_eigen_json(const Model& model, const StabilityPoint& p,
+                      const std::vector<ModeShape>& shapes, OutputSet& outputs,
                       const std::string& stem);
 
 // The state count, removed cyclic states, solver and the modes with

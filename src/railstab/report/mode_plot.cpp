@@ -94,11 +94,14 @@ std::array<std::array<double, 2>, 5> displaced_outline(const BodyOutline& o, con
 }
 
 std::vector<std::string> write_mode_plots(const Model& model, const StabilityPoint& p,
+                                          const std::vector<ModeShape>& shapes,
                                           const std::vector<int>& modes, OutputSet& outputs,
                                           const std::string& stem, int phases) {
+  if (shapes.size() != p.modes.size())
+    throw std::invalid_argument("write_mode_plots: " + std::to_string(shapes.size()) +
+                                " mode shapes for " + std::to_string(p.modes.size()) + " modes");
   const BodyRoles roles = body_roles(model);
   const std::vector<BodyOutline> outlines = plan_view_outlines(model, roles);
-  const std::vector<ModeShape> shapes = full_mode_shapes(model, p);
   double x_lo = 0.0, x_hi = 0.0;
   for (const BodyOutline& o : outlines) {
     x_lo = std::min(x_lo, o.x_m - o.half_length_m);

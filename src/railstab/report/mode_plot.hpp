@@ -54,7 +54,9 @@ std::array<std::array<double, 2>, 5> displaced_outline(const BodyOutline& o, con
 // ..._animated.gif (one period, 16 frames), plus the data and the gnuplot
 // script, to `outputs` for each mode index in `modes` (into p.modes); runs
 // gnuplot; returns the PNG names.
+// `shapes`: one per p.modes (stability/point_mode_shapes.hpp full_mode_shapes).
 std::vector<std::string> write_mode_plots(const Model& model, const StabilityPoint& p,
+                                          const std::vector<ModeShape>& shapes,
                                           const std::vector<int>& modes, OutputSet& outputs,
                                           const std::string& stem, int phases = 4);
 

@@ -17,16 +17,6 @@ double phase_deg(std::complex<double> z) { return std::abs(z) > 0.0 ? std::arg(z
 
 }  // namespace
 
-std::vector<ModeShape> full_mode_shapes(const Model& model, const StabilityPoint& p) {
-  const Eigen::MatrixXd K =
-      suspension_stiffness(model, p.speed_m_per_s, p.time_s, p.equilibrium.state);
-  std::vector<ModeShape> shapes;
-  shapes.reserve(p.modes.size());
-  for (const ModeReport& m : p.modes)
-    shapes.push_back(mode_shape(model, p.linear, K, m.eigenvalue, m.vector));
-  return shapes;
-}
-
 void write_mode_shape_json(JsonWriter& j, const Model& model, const ModeShape& shape) {
   j.begin_object();
   if (shape.reference >= 0)

@@ -4,16 +4,11 @@
 #include <railstab/io/json_writer.hpp>
 #include <railstab/model/model.hpp>
 #include <railstab/stability/mode_shape.hpp>
-#include <railstab/stability/speed_analysis.hpp>
 
 #include <ostream>
 #include <vector>
 
 namespace railstab {
-
-// Shapes of every mode of `p` with potential-energy shares (one stiffness
-// evaluation at p's steady state), in the order of p.modes.
-std::vector<ModeShape> full_mode_shapes(const Model& model, const StabilityPoint& p);
 
 // The value of a "shape" key: {normalised_to, units, potential_energy_defined,
 // coordinates: [{body, coordinate, amplitude, phase_deg,

@@ -28,12 +28,8 @@ const char* geometry_name(ContactGeometryKind g) {
 std::string creep_law_description(const CreepLawSpec& law) {
   return std::visit(
       [](auto l) {  // a copy: for_each_parameter hands out references
-        using Law = std::decay_t<decltype(l)>;
         std::ostringstream s;
-        if constexpr (std::is_same_v<Law, LinearKalkerCreep<double>>) s << "linear_kalker";
-        else if constexpr (std::is_same_v<Law, ShenHedrickElkinsCreep<double>>)
-          s << "shen_hedrick_elkins";
-        else s << "polach";
+        s << std::decay_t<decltype(l)>::kName;
         const char* sep = " (";
         l.for_each_parameter([&](const std::string& key, int, double& value) {
           s << sep << key << " " << value;

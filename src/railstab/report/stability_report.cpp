@@ -15,53 +15,9 @@
 #include <iomanip>
 #include <map>
 #include <sstream>
+#include <stdexcept>
 
 namespace railstab {
-
-StabilityVerdict stability_verdict(const CriticalSpeedResult& r) {
-  if (r.unstable_at_start) return StabilityVerdict::unstable_at_start;
-  if (r.critical_speed_found) return StabilityVerdict::critical_speed_found;
-  if (r.stable_in_range) return StabilityVerdict::stable_in_range;
-  return StabilityVerdict::stable_below_equilibrium_loss;
-}
-
-std::string verdict_key(StabilityVerdict v) {
-  switch (v) {
-    case StabilityVerdict::unstable_at_start: return "unstable_at_start";
-    case StabilityVerdict::critical_speed_found: return "critical_speed_found";
-    case StabilityVerdict::stable_in_range: return "stable_in_range";
-    case StabilityVerdict::stable_below_equilibrium_loss: return "stable_below_equilibrium_loss";
-  }
-  return "unknown";
-}
-
-std::string verdict_sentence(const CriticalSpeedResult& r) {
-  std::ostringstream s;
-  s << std::setprecision(6);
-  switch (stability_verdict(r)) {
-    case StabilityVerdict::unstable_at_start:
-      s << "already unstable at the lowest speed " << r.from_m_per_s << " m/s";
-      break;
-    case StabilityVerdict::critical_speed_found:
-      s << "critical speed " << std::fixed << std::setprecision(2) << r.critical_speed_m_per_s
-        << " m/s";
-      if (r.loss.kind == LossOfStabilityKind::jump)
-        s << " (stability lost by a jump of the steady state, no eigenvalue crosses)";
-      else if (r.loss.kind == LossOfStabilityKind::aperiodic_crossing)
-        s << " (a real eigenvalue crosses zero: divergence or the fold of the steady state)";
-      break;
-    case StabilityVerdict::stable_in_range:
-      s << "stable over the whole range " << r.from_m_per_s << " - " << r.to_m_per_s << " m/s";
-      break;
-    case StabilityVerdict::stable_below_equilibrium_loss:
-      s << "stable from " << r.from_m_per_s << " m/s up to "
-        << (r.grid.empty() ? r.from_m_per_s : r.grid.back().speed_m_per_s)
-        << " m/s only: no steady state from " << r.equilibrium_lost_at_m_per_s
-        << " m/s, so the range up to " << r.to_m_per_s << " m/s is not shown stable";
-      break;
-  }
-  return s.str();
-}
 
 namespace {
 
@@ -378,7 +334,11 @@ void write_json(std::ostream& out, const Model& model, const CriticalSpeedResult
           .field("max_real_part_unstable_side_per_s", r.loss.unstable_max_real_part_per_s)
           .field("steady_state_largest_translation_change_m", r.loss.largest_translation_change_m);
       j.end_object();
-      const std::vector<ModeShape> shapes = full_mode_shapes(model, r.at_critical);
+      const std::vector<ModeShape>& shapes = r.shapes_at_critical;
+      if (shapes.size() != r.at_critical.modes.size())
+        throw std::invalid_argument(
+            "critical-speed JSON: the result holds no mode shapes at the critical speed "
+            "(CriticalSpeedOptions::mode_shapes_at_critical was off)");
       j.key("mode_shape").begin_object();
       write_mode_json(j, m);
       j.key("shape");
@@ -402,8 +362,7 @@ void write_json(std::ostream& out, const Model& model, const CriticalSpeedResult
     } else {
       j.key("critical_speed_m_s").null().key("frequency_hz").null().key("mode").null();
     }
-    j.field("eigen_solver", solver)
-        .field("states", int(r.grid.empty() ? 0 : r.grid.front().linear.states()))
+    j.field("states", int(r.grid.empty() ? 0 : r.grid.front().linear.states()))
         .field("evaluations", r.evaluations)
         .field("wall_seconds", r.seconds);
     j.key("removed_cyclic_states").begin_array();
@@ -513,8 +472,9 @@ void write_markdown(std::ostream& md_out, const Model& model, const CriticalSpee
          << " |\n"
          << "| mode | " << md_text(m.name) << " |\n"
          << "| loss of stability | " << md_text(describe_loss_of_stability(r.loss)) << " |\n\n";
-      write_mode_shape_markdown(
-          md, model, full_mode_shapes(model, r.at_critical)[size_t(r.at_critical.least_stable)]);
+      if (r.shapes_at_critical.size() == r.at_critical.modes.size())
+        write_mode_shape_markdown(md, model,
+                                  r.shapes_at_critical[size_t(r.at_critical.least_stable)]);
       md << std::setprecision(4);
     }
     for (const StabilityPoint& p : r.grid)
@@ -575,7 +535,11 @@ StabilityFiles write_stability_results(const Model& model, const CriticalSpeedRe
                                        double max_plot_frequency_hz) {
   for (const std::string& name : stability_file_names(stem)) outputs.replaces(name);
   StabilityFiles files;
-  const auto ids = track_modes(result.grid);
+  const std::vector<std::vector<int>>& ids = result.mode_tracks;
+  if (ids.size() != result.grid.size())
+    throw std::invalid_argument("write_stability_results: the result's mode tracks (" +
+                                std::to_string(ids.size()) + ") do not cover its grid (" +
+                                std::to_string(result.grid.size()) + " speeds)");
   // Where and how, stated alike in the JSON and the Markdown.
   const RunConditions conditions = run_conditions(model);
   files.csv = stem + "_eigenvalues.csv";

@@ -5,6 +5,7 @@
 #include <railstab/io/output_set.hpp>
 #include <railstab/model/model.hpp>
 #include <railstab/stability/speed_analysis.hpp>
+#include <railstab/stability/verdict.hpp>
 
 #include <ostream>
 #include <string>
@@ -34,18 +35,6 @@ StabilityFiles write_stability_results(const Model& model, const CriticalSpeedRe
 // (`hunting_band_hz`), the number of speed evaluations and their time.
 void print_critical_speed_summary(std::ostream& out, const Model& model,
                                   const CriticalSpeedResult& r, double hunting_band_hz);
-
-// The outcome of a critical-speed run, one decision for every output (JSON
-// "verdict", Markdown, terminal), so they cannot disagree.
-enum class StabilityVerdict {
-  unstable_at_start,
-  critical_speed_found,
-  stable_in_range,                // no crossing over the whole range asked
-  stable_below_equilibrium_loss,  // no crossing, but the steady state was lost below the top
-};
-StabilityVerdict stability_verdict(const CriticalSpeedResult& r);
-std::string verdict_key(StabilityVerdict v);       // the JSON "verdict" value
-std::string verdict_sentence(const CriticalSpeedResult& r);  // the words all outputs use
 
 // Every name write_stability_results may write for `stem`.
 std::vector<std::string> stability_file_names(const std::string& stem);

@@ -15,6 +15,7 @@
 //   non-spinning intermediate frame I = Bz Bx.
 // - Curvature > 0 turns left (+y). Cant > 0 raises the right rail, i.e. the
 //   normal cant of a left-hand curve; the track roll angle is -asin(cant / D).
+#include <railstab/contact/creep/creep_law_concept.hpp>
 #include <railstab/contact/creep/linear_kalker_creep.hpp>
 #include <railstab/contact/creep/polach_creep.hpp>
 #include <railstab/contact/creep/shen_hedrick_elkins_creep.hpp>
@@ -67,6 +68,7 @@ enum class TangentialForceKind {
 template <class S>
 using CreepLawTpl = std::variant<LinearKalkerCreep<S>, ShenHedrickElkinsCreep<S>, PolachCreep<S>>;
 using CreepLawSpec = CreepLawTpl<double>;
+static_assert(assert_creep_laws(std::type_identity<CreepLawTpl<double>>{}));
 
 struct ContactSpec {
   std::string name;

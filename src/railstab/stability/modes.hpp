@@ -33,7 +33,7 @@ struct ModeReport {
   std::string shape_name;  // from the shape alone, before making names unique
   // The shape itself is not kept (26 KB per mode of a 16-car train, at every
   // speed of a sweep): describe_mode_shapes gives it again, reports form it
-  // with the potential shares (report/mode_shape_report.hpp full_mode_shapes).
+  // with the potential shares (stability/point_mode_shapes.hpp full_mode_shapes).
   std::vector<Participation> participation;  // largest first (at most 6)
   // Share of the kinetic energy in the lateral plane (lateral, roll and yaw
   // of every body): near 1 for hunting and sway, near 0 for bounce, pitch

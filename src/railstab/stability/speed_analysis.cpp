@@ -7,6 +7,7 @@
 #include <railstab/setup/model_error_context.hpp>
 
 #include <railstab/stability/mode_names.hpp>
+#include <railstab/stability/point_mode_shapes.hpp>
 
 #include <algorithm>
 #include <map>
@@ -18,14 +19,33 @@
 
 namespace railstab {
 
+namespace {
+constexpr std::pair<EigenSolverKind, const char*> kEigenSolverNames[] = {
+    {EigenSolverKind::automatic, "auto"},
+    {EigenSolverKind::dense, "dense"},
+    {EigenSolverKind::sparse, "sparse"},
+    {EigenSolverKind::arpack, "arpack"},
+};
+}  // namespace
+
 std::string eigen_solver_name(EigenSolverKind kind) {
-  switch (kind) {
-    case EigenSolverKind::automatic: return "auto";
-    case EigenSolverKind::dense: return "dense";
-    case EigenSolverKind::arpack: return "arpack";
-    case EigenSolverKind::sparse: return "sparse";
-  }
+  for (const auto& [k, name] : kEigenSolverNames)
+    if (k == kind) return name;
   return "unknown";
+}
+
+std::vector<std::string> eigen_solver_names() {
+  std::vector<std::string> names;
+  for (const auto& entry : kEigenSolverNames) names.push_back(entry.second);
+  return names;
+}
+
+EigenSolverKind eigen_solver_from_name(const std::string& name) {
+  for (const auto& [k, n] : kEigenSolverNames)
+    if (name == n) return k;
+  std::string expected;
+  for (const std::string& n : eigen_solver_names()) expected += (expected.empty() ? "" : ", ") + n;
+  throw std::invalid_argument("eigen-solver '" + name + "': expected one of " + expected);
 }
 
 EigenSolverKind resolved_solver(EigenSolverKind kind, int n_states) {
@@ -431,12 +451,15 @@ CriticalSpeedResult find_critical_speed(const Model& model, const Eigen::VectorX
     if (r.loss.kind == LossOfStabilityKind::jump) r.at_critical = std::move(b.hi);
   }
   if (options.min_damping_ratio > 0.0) find_damping_limit(model, options, r, report);
-  name_tracked_modes(r.grid, track_modes(r.grid));
+  r.mode_tracks = track_modes(r.grid);
+  name_tracked_modes(r.grid, r.mode_tracks);
   if (r.critical_speed_found || r.unstable_at_start) inherit_mode_names(r.at_critical, r.grid);
   if (r.loss.kind == LossOfStabilityKind::jump && r.at_critical.least_stable >= 0)
     r.loss.unstable_mode = r.at_critical.modes[size_t(r.at_critical.least_stable)].name;
   if (r.damping_limit_found || r.damping_below_at_start)
     inherit_mode_names(r.at_damping_limit, r.grid);
+  if (options.mode_shapes_at_critical && r.critical_speed_found)
+    r.shapes_at_critical = full_mode_shapes(model, r.at_critical);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
 }

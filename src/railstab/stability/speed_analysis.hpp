@@ -26,7 +26,13 @@ namespace railstab {
 // when asked: it decides nothing about the modes it did not compute).
 enum class EigenSolverKind { automatic, dense, arpack, sparse };
 inline constexpr int kSparseFromStates = 300;
+// The solvers' names, one table for the command line (--solver), a study's
+// record and every report: "auto", "dense", "arpack", "sparse".
 std::string eigen_solver_name(EigenSolverKind kind);
+// The kind of a name from that table; throws std::invalid_argument naming the
+// names it takes.
+EigenSolverKind eigen_solver_from_name(const std::string& name);
+std::vector<std::string> eigen_solver_names();
 // The solver `kind` resolves to for an n-state linear model.
 EigenSolverKind resolved_solver(EigenSolverKind kind, int n_states);
 
@@ -154,6 +160,15 @@ struct CriticalSpeedResult {
   // bisection's, keep modes and eigenvectors but not the state matrix
   // (linear.A and A_sparse released: memory per point bounded).
   std::vector<StabilityPoint> grid;
+  // Modes followed across the grid (track_modes(grid)): mode_tracks[i][j] is
+  // the track of grid[i].modes[j], -1 where untracked. The plots' lines and
+  // the eigenvalue CSV's mode_track column.
+  std::vector<std::vector<int>> mode_tracks;
+  // The full shape of every mode of at_critical (stability/
+  // point_mode_shapes.hpp), in the order of at_critical.modes; empty when no
+  // critical speed was found or CriticalSpeedOptions::mode_shapes_at_critical
+  // is off.
+  std::vector<ModeShape> shapes_at_critical;
   int evaluations = 0;
   double seconds = 0.0;
   // The grid stops at the first speed without a steady state (e.g. a cant
@@ -184,6 +199,10 @@ struct CriticalSpeedOptions {
   // hunting band (least_damped_mode) has a damping ratio below this (e.g.
   // 0.05); 0: off.
   double min_damping_ratio = 0.0;
+  // Form CriticalSpeedResult::shapes_at_critical (two AD Jacobians at the
+  // critical speed's steady state): what the reports show; a study's many
+  // searches need only the speed.
+  bool mode_shapes_at_critical = true;
   std::function<void(const std::string&)> progress;
 };
 

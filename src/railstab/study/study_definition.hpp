@@ -35,7 +35,7 @@ std::string varied_key_text(const VariedKey& varied);  // "KEY=FROM:TO:STEP", ex
 // The analysis every combination runs (critical-speed's flags).
 struct StudyAnalysis {
   double from_m_per_s = 5.0, to_m_per_s = 150.0, grid_step_m_per_s = 2.5;
-  std::string solver = "auto";  // auto | dense | arpack
+  std::string solver = "auto";  // a name of eigen_solver_names()
   double hunting_band_hz = 20.0;
 };
 

@@ -1,6 +1,6 @@
 #include <railstab/study/study_run.hpp>
 
-#include <railstab/report/stability_report.hpp>
+#include <railstab/stability/verdict.hpp>
 #include <railstab/setup/model_error_context.hpp>
 #include <railstab/setup/prepare_scene.hpp>
 #include <railstab/stability/speed_analysis.hpp>
@@ -18,9 +18,7 @@ namespace {
 
 StabilityOptions stability_options(const StudyAnalysis& a) {
   StabilityOptions o;
-  o.solver = a.solver == "arpack"  ? EigenSolverKind::arpack
-             : a.solver == "dense" ? EigenSolverKind::dense
-                                   : EigenSolverKind::automatic;
+  o.solver = eigen_solver_from_name(a.solver);
   o.max_frequency_hz = a.hunting_band_hz;
   return o;
 }
@@ -51,6 +49,7 @@ StudyPoint run_study_point(const StudyDefinition& d, std::size_t index) {
     opt.to_m_per_s = d.analysis.to_m_per_s;
     opt.grid_step_m_per_s = d.analysis.grid_step_m_per_s;
     opt.stability = stability_options(d.analysis);
+    opt.mode_shapes_at_critical = false;  // a study record holds the speed and mode name only
     const CriticalSpeedResult r = find_critical_speed(s.model, s.equilibrium.state, s.speed_m_per_s, opt);
     p.status = verdict_key(stability_verdict(r));
     p.critical_speed_found = r.critical_speed_found;

@@ -17,7 +17,7 @@ namespace railstab {
 struct StudyPoint {
   std::size_t index = 0;
   std::vector<double> values;  // one per varied key
-  // The verdict of the search (report/stability_report.hpp verdict_key:
+  // The verdict of the search (stability/verdict.hpp verdict_key:
   // critical_speed_found, stable_in_range, unstable_at_start,
   // stable_below_equilibrium_loss), or "error".
   std::string status;

@@ -10,6 +10,7 @@
 namespace railstab {
 
 template <class S> struct LinearKalkerCreep {
+  static constexpr const char* kName = "linear_kalker";  // creep_law in scene files and reports
   // r: multiplies f11, f22, f23, f33; dimensionless, in (0, 1]. Default 1
   // (Kalker's theory as is; values ~0.5-0.8 are used for real, contaminated
   // surfaces).

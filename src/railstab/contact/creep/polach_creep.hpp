@@ -71,6 +71,7 @@
 namespace railstab {
 
 template <class S> struct PolachCreep {
+  static constexpr const char* kName = "polach";  // creep_law in scene files and reports
   static constexpr double kSpinSwitchWidth = 1e-16;                // creepage^2
   static constexpr double kSlipVelocityRegularisation_m_per_s = 1e-6;
 

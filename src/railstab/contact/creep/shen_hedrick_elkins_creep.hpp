@@ -36,6 +36,7 @@
 namespace railstab {
 
 template <class S> struct ShenHedrickElkinsCreep {
+  static constexpr const char* kName = "shen_hedrick_elkins";  // creep_law in scene files and reports
   static constexpr double kResultantRegularisation = 1e-9;  // d above, dimensionless
 
   // mu: dimensionless, > 0. Default 0.4, the dry-rail value commonly used in
