@@ -20,10 +20,11 @@ cd "$(dirname "$0")/.."
 fuzz_seconds=${RAILSTAB_FUZZ_SECONDS:-30}
 long_runs='SteadyCurvingProfiles\.EquilibriumIsWhere|CriticalSpeedSensitivity\.ThesisVehicle|ContactDamping\.VerifyInTheArc|ThesisBogie\.ShiftsOutwardsInCurve|ExtremeConservative|Extreme/ExtremeRun|Verification\.|ErrorEstimate\.|ExtremeNearCritical|CurveStabilityProfiles\.(SpinMode|VehicleArc|HighSpeed)|CliVerifyAnyMode'
 timed='ContactTables\.BuildTakesUnderOneSecond|SundialsFlagNames|WorkLimits'
-# Packaging tests (the example program, install + find_package): about the
+# Packaging and build tests (the example programs, install + find_package,
+# the compile-fail test of the element contract): about the
 # Release build's install tree, not about memory errors; the Release suite
 # runs them (an ASan library cannot be linked by an uninstrumented consumer).
-packaging='^example_critical_speed$|^install_and_find_package$'
+packaging='^example_critical_speed$|^example_eigen_at_speed$|^install_and_find_package$|^compile_fail_'
 skip=${RAILSTAB_SANITIZE_SKIP:-"$long_runs|$timed|$packaging"}
 build=build-sanitize
 

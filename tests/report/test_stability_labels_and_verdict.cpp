@@ -88,6 +88,7 @@ TEST(StabilityVerdict, JsonAndMarkdownAgreeInEveryOutcome) {
   // Stable over the whole (one-point) range.
   CriticalSpeedResult stable;
   stable.grid = {p};
+  stable.mode_tracks = track_modes(stable.grid);  // as find_critical_speed fills it
   stable.from_m_per_s = stable.to_m_per_s = 10.0;
   expect_agreement(write_all(s.model, stable, "stable", false), stable);
   // No crossing, but the steady state lost below the top: not "stable over

@@ -26,6 +26,7 @@ TEST(StabilityReportOutputs, OneSpeedGridStillWritesEveryFileAndPlot) {
   SpeedStability stability(s.model, s.equilibrium.state, s.speed_m_per_s);
   CriticalSpeedResult r;
   r.grid.push_back(stability.at(30.0));
+  r.mode_tracks = track_modes(r.grid);  // as find_critical_speed fills it
   r.from_m_per_s = r.to_m_per_s = 30.0;
   r.evaluations = 1;
   const fs::path dir = fs::temp_directory_path() /
