@@ -12,6 +12,8 @@
 // p = -expm1(x) accurate for nearly circular and for very slender ellipses.
 #include <railstab/contact/hertz.hpp>
 
+#include <railstab/core/nested_dual.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -339,10 +341,11 @@ template <class T> HertzShape<T> hertz_shape(const T& A_per_m, const T& B_per_m,
     // Parameter-derivative scalars need exact second derivatives: two
     // chord steps from the double root (each adds one exact order: the
     // error after n steps is O(eps^(n+1)) in the derivative directions),
-    // then K, E by the AGM in T.
+    // then K, E by the AGM in T. Dual3 (third derivatives) takes three.
     using std::exp;
+    constexpr int chord_steps = DualDepth<T>::value > 2 ? DualDepth<T>::value : 2;
     T x = T(x0);
-    for (int step = 0; step < 2; ++step)
+    for (int step = 0; step < chord_steps; ++step)
       x = x - (log_curvature_ratio(x) - log(ratio)) / at_root.slope;
     k_squared = exp(x);
     elliptic_by_agm(k_squared, T(1.0 - k_squared), K, E);
@@ -389,6 +392,7 @@ template HertzShape<AdScalar> hertz_shape(const AdScalar&, const AdScalar&, doub
 template HertzShape<ParamDual> hertz_shape(const ParamDual&, const ParamDual&, double);
 template HertzShape<ParamAdScalar> hertz_shape(const ParamAdScalar&, const ParamAdScalar&,
                                                double);
+template HertzShape<Dual3> hertz_shape(const Dual3&, const Dual3&, double);
 template double elliptic_K(const double&);
 template AdScalar elliptic_K(const AdScalar&);
 template double elliptic_E(const double&);

@@ -10,6 +10,8 @@
 // quadratic through them (exact at the nodes).
 #include <railstab/contact/kalker.hpp>
 
+#include <railstab/core/nested_dual.hpp>
+
 #include <Eigen/LU>
 
 #include <array>
@@ -206,6 +208,8 @@ template KalkerTableValues<double> kalker_table(const double&, double);
 template KalkerTableValues<AdScalar> kalker_table(const AdScalar&, double);
 template KalkerTableValues<ParamDual> kalker_table(const ParamDual&, double);
 template KalkerTableValues<ParamAdScalar> kalker_table(const ParamAdScalar&, double);
+template KalkerTableValues<Dual3> kalker_table(const Dual3&, double);
+template CreepCoefficients<Dual3> kalker_coefficients(const Dual3&, const Dual3&, double, double);
 template CreepCoefficients<ParamDual> kalker_coefficients(const ParamDual&, const ParamDual&,
                                                           double, double);
 template CreepCoefficients<ParamAdScalar> kalker_coefficients(const ParamAdScalar&,

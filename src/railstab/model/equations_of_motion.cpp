@@ -1,5 +1,7 @@
 #include <railstab/model/equations_of_motion.hpp>
 
+#include <railstab/core/nested_dual.hpp>
+
 #include <sstream>
 #include <stdexcept>
 
@@ -121,6 +123,8 @@ RAILSTAB_DEFINE_RHS(double)
 RAILSTAB_DEFINE_RHS(AdScalar)
 RAILSTAB_DEFINE_RHS(ParamDual)
 RAILSTAB_DEFINE_RHS(ParamAdScalar)
+// Exact second and third state derivatives (nonlinear/multilinear_forms.hpp).
+RAILSTAB_DEFINE_RHS(Dual3)
 #undef RAILSTAB_DEFINE_RHS
 
 }  // namespace railstab

@@ -1,5 +1,7 @@
 #include <railstab/contact/creep/linear_kalker_creep.hpp>
 
+#include <railstab/core/nested_dual.hpp>
+
 namespace railstab {
 
 template <class S> void LinearKalkerCreep<S>::validate() const {
@@ -30,5 +32,8 @@ template CreepForces<AdScalar> LinearKalkerCreep<AdScalar>::forces(
 // Parameters as AD variables (sensitivity): the model cast to ParamDual.
 template CreepForces<ParamDual> LinearKalkerCreep<ParamDual>::forces(const CreepInput<ParamDual>&) const;
 template CreepForces<ParamAdScalar> LinearKalkerCreep<ParamDual>::forces(const CreepInput<ParamAdScalar>&) const;
+
+// Exact second and third state derivatives (nonlinear/multilinear_forms.hpp).
+template CreepForces<Dual3> LinearKalkerCreep<double>::forces(const CreepInput<Dual3>&) const;
 
 }  // namespace railstab

@@ -1,5 +1,7 @@
 #include <railstab/contact/creep/polach_creep.hpp>
 
+#include <railstab/core/nested_dual.hpp>
+
 #include <railstab/contact/creep/smooth_functions.hpp>
 
 #include <numbers>
@@ -96,5 +98,8 @@ template CreepForces<AdScalar> PolachCreep<AdScalar>::forces(const CreepInput<Ad
 // Parameters as AD variables (sensitivity): the model cast to ParamDual.
 template CreepForces<ParamDual> PolachCreep<ParamDual>::forces(const CreepInput<ParamDual>&) const;
 template CreepForces<ParamAdScalar> PolachCreep<ParamDual>::forces(const CreepInput<ParamAdScalar>&) const;
+
+// Exact second and third state derivatives (nonlinear/multilinear_forms.hpp).
+template CreepForces<Dual3> PolachCreep<double>::forces(const CreepInput<Dual3>&) const;
 
 }  // namespace railstab

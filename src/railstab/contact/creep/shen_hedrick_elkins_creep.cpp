@@ -1,5 +1,7 @@
 #include <railstab/contact/creep/shen_hedrick_elkins_creep.hpp>
 
+#include <railstab/core/nested_dual.hpp>
+
 #include <railstab/contact/creep/smooth_functions.hpp>
 
 namespace railstab {
@@ -45,5 +47,8 @@ template CreepForces<AdScalar> ShenHedrickElkinsCreep<AdScalar>::forces(
 // Parameters as AD variables (sensitivity): the model cast to ParamDual.
 template CreepForces<ParamDual> ShenHedrickElkinsCreep<ParamDual>::forces(const CreepInput<ParamDual>&) const;
 template CreepForces<ParamAdScalar> ShenHedrickElkinsCreep<ParamDual>::forces(const CreepInput<ParamAdScalar>&) const;
+
+// Exact second and third state derivatives (nonlinear/multilinear_forms.hpp).
+template CreepForces<Dual3> ShenHedrickElkinsCreep<double>::forces(const CreepInput<Dual3>&) const;
 
 }  // namespace railstab
