@@ -1,6 +1,6 @@
 #pragma once
 // `--set KEY=VALUE` (repeatable) on every command that reads a scene: a
-// numeric scene value replaced by its key path (io/scene_set_values.hpp).
+// numeric scene value replaced by its key path (scene_reading/scene_set_values.hpp).
 // The form and the number are checked while parsing ("--set: expected a
 // finite number as the value of bodies.carbody.mass_kg, got 'abc'"); the key
 // when the scene is read.

@@ -3,7 +3,6 @@
 #include <railstab/contact_geometry/profile_contact_geometry.hpp>
 #include <railstab/core/version.hpp>
 #include <railstab/io/file_names.hpp>
-#include <railstab/io/sha256.hpp>
 #include <railstab/report/markdown_text.hpp>
 
 #include <cmath>
