@@ -1,5 +1,5 @@
 # The numeric libraries railstab links, by library name: SUNDIALS 6.4
-# (CVODE, ARKODE, KINSOL, dense and KLU linear solvers), SuiteSparse KLU
+# (CVODES, i.e. CVODE with forward sensitivities, ARKODE, KINSOL, dense and KLU linear solvers), SuiteSparse KLU
 # and ARPACK, as imported targets railstab::<lib>. By name because Debian's
 # SUNDIALS CMake export also lists static targets whose files may be absent.
 # Included by the build (CMakeLists.txt) and by the installed package
@@ -8,7 +8,7 @@
 # Sets RAILSTAB_NUMERIC_LIBS to the targets; when a library is missing,
 # RAILSTAB_NUMERIC_MISSING to its name (the caller decides how to fail).
 set(RAILSTAB_NUMERIC_LIBRARY_NAMES
-    sundials_cvode sundials_arkode sundials_kinsol sundials_nvecserial
+    sundials_cvodes sundials_arkode sundials_kinsol sundials_nvecserial
     sundials_sunmatrixdense sundials_sunlinsoldense sundials_sunmatrixsparse
     sundials_sunlinsolklu klu amd colamd btf suitesparseconfig arpack)
 set(RAILSTAB_NUMERIC_LIBS "")

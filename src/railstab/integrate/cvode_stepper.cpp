@@ -1,7 +1,10 @@
 // CVODE (BDF or Adams-Moulton) with a dense Newton solver and the AD Jacobian.
 #include <railstab/integrate/stepper.hpp>
 
-#include <cvode/cvode.h>
+// CVODES: CVODE with the forward sensitivity module (the periodic orbits'
+// monodromy, nonlinear/flow_sensitivity.hpp). One library for both: CVODE
+// and CVODES export the same CVode* symbols, so a program cannot link both.
+#include <cvodes/cvodes.h>
 
 namespace railstab {
 
