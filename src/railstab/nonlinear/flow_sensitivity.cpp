@@ -1,0 +1,219 @@
+#include <railstab/nonlinear/flow_sensitivity.hpp>
+
+#include <cvodes/cvodes.h>
+#include <nvector/nvector_serial.h>
+#include <sundials/sundials_context.h>
+#include <sunlinsol/sunlinsol_dense.h>
+#include <sunmatrix/sunmatrix_dense.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <ctime>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace railstab {
+
+namespace {
+
+Eigen::Map<Eigen::VectorXd> view(N_Vector v) {
+  return Eigen::Map<Eigen::VectorXd>(N_VGetArrayPointer(v), N_VGetLength(v));
+}
+
+// What the CVODES callbacks see. The Jacobian is cached on (t, x): the
+// staggered corrector evaluates the sensitivity right-hand sides several
+// times at one converged state.
+struct FlowCallbackData {
+  const FlowSystem* system = nullptr;
+  double speed = 0.0;
+  Eigen::VectorXd x, f, dfdV;
+  Eigen::MatrixXd J;
+  bool jacobian_valid = false;
+  double jacobian_t = 0.0;
+  Eigen::VectorXd jacobian_x;
+  long jacobian_evaluations = 0;
+  long dfdV_at_evaluation = -1;  // dfdV belongs to this Jacobian evaluation
+  std::string error;
+
+  const Eigen::MatrixXd& jacobian_at(double t, const Eigen::Map<Eigen::VectorXd>& y) {
+    if (!(jacobian_valid && t == jacobian_t && y == jacobian_x)) {
+      x = y;
+      system->jacobian(x, speed, J);
+      if (!J.allFinite()) throw std::runtime_error("non-finite Jacobian entry");
+      jacobian_x = x, jacobian_t = t, jacobian_valid = true;
+      ++jacobian_evaluations;
+    }
+    return J;
+  }
+};
+
+template <class F> int guarded(FlowCallbackData& d, F&& body) {
+  try {
+    return body();
+  } catch (const std::exception& e) {
+    if (d.error.empty()) d.error = e.what();
+    return 1;  // recoverable: CVODES retries with a smaller step
+  }
+}
+
+int rhs_callback(double, N_Vector y, N_Vector ydot, void* user) {
+  auto& d = *static_cast<FlowCallbackData*>(user);
+  return guarded(d, [&] {
+    d.x = view(y);
+    d.system->rhs(d.x, d.speed, d.f);
+    if (!d.f.allFinite()) throw std::runtime_error("non-finite state derivative");
+    view(ydot) = d.f;
+    return 0;
+  });
+}
+
+int jacobian_callback(double t, N_Vector y, N_Vector, SUNMatrix Jmat, void* user, N_Vector,
+                      N_Vector, N_Vector) {
+  auto& d = *static_cast<FlowCallbackData*>(user);
+  return guarded(d, [&] {
+    const Eigen::MatrixXd& J = d.jacobian_at(t, view(y));
+    const sunindextype n = SM_ROWS_D(Jmat);
+    Eigen::Map<Eigen::MatrixXd>(SM_DATA_D(Jmat), n, n) = J;  // column-major, ldim n
+    return 0;
+  });
+}
+
+// ySdot_i = J yS_i, plus df/dV for the last (the speed's) sensitivity.
+int sensitivity_callback(int Ns, double t, N_Vector y, N_Vector, N_Vector* yS, N_Vector* ySdot,
+                         void* user, N_Vector, N_Vector) {
+  auto& d = *static_cast<FlowCallbackData*>(user);
+  return guarded(d, [&] {
+    const Eigen::MatrixXd& J = d.jacobian_at(t, view(y));
+    for (int i = 0; i < Ns; ++i) view(ySdot[i]).noalias() = J * view(yS[i]);
+    if (d.dfdV_at_evaluation != d.jacobian_evaluations) {  // same (t, x) as J
+      d.dfdV = speed_derivative(*d.system, d.jacobian_x, d.speed);
+      if (!d.dfdV.allFinite()) throw std::runtime_error("non-finite df/dV");
+      d.dfdV_at_evaluation = d.jacobian_evaluations;
+    }
+    view(ySdot[Ns - 1]) += d.dfdV;
+    return 0;
+  });
+}
+
+void error_handler(int, const char*, const char* function, char* msg, void* user) {
+  auto& d = *static_cast<FlowCallbackData*>(user);
+  if (d.error.empty()) d.error = std::string(function) + ": " + msg;
+}
+
+void check(int flag, const char* call) {
+  if (flag < 0) throw std::runtime_error(std::string("integrate_flow: ") + call + " failed (flag " +
+                                         std::to_string(flag) + ")");
+}
+
+// Owners of the SUNDIALS objects, freed in reverse order.
+struct CvodesRun {
+  SUNContext ctx = nullptr;
+  N_Vector y = nullptr;
+  N_Vector* yS = nullptr;
+  int Ns = 0;
+  SUNMatrix A = nullptr;
+  SUNLinearSolver LS = nullptr;
+  void* mem = nullptr;
+  ~CvodesRun() {
+    if (mem) CVodeFree(&mem);
+    if (LS) SUNLinSolFree(LS);
+    if (A) SUNMatDestroy(A);
+    if (yS) N_VDestroyVectorArray(yS, Ns);
+    if (y) N_VDestroy(y);
+    if (ctx) SUNContext_Free(&ctx);
+  }
+};
+
+}  // namespace
+
+FlowResult integrate_flow(const FlowSystem& system, const Eigen::VectorXd& x0,
+                          double speed_m_per_s, double duration_s, const FlowOptions& options) {
+  const int n = system.size;
+  if (x0.size() != n)
+    throw std::invalid_argument("integrate_flow: initial state has size " +
+                                std::to_string(x0.size()) + ", the system " + std::to_string(n));
+  if (!(duration_s > 0.0) || !std::isfinite(duration_s))
+    throw std::invalid_argument("integrate_flow: the time span must be positive and finite");
+  const std::clock_t cpu0 = std::clock();
+  FlowCallbackData data;
+  data.system = &system;
+  data.speed = speed_m_per_s;
+
+  CvodesRun run;
+  check(SUNContext_Create(nullptr, &run.ctx), "SUNContext_Create");
+  run.y = N_VNew_Serial(n, run.ctx);
+  view(run.y) = x0;
+  run.A = SUNDenseMatrix(n, n, run.ctx);
+  run.LS = SUNLinSol_Dense(run.y, run.A, run.ctx);
+  run.mem = CVodeCreate(CV_BDF, run.ctx);
+  if (!run.y || !run.A || !run.LS || !run.mem) throw std::runtime_error("integrate_flow: out of memory");
+  void* mem = run.mem;
+  check(CVodeSetErrHandlerFn(mem, error_handler, &data), "CVodeSetErrHandlerFn");
+  check(CVodeInit(mem, rhs_callback, 0.0, run.y), "CVodeInit");
+  check(CVodeSStolerances(mem, options.relative_tolerance, options.absolute_tolerance),
+        "CVodeSStolerances");
+  check(CVodeSetUserData(mem, &data), "CVodeSetUserData");
+  check(CVodeSetMaxNumSteps(mem, options.max_steps), "CVodeSetMaxNumSteps");
+  check(CVodeSetLinearSolver(mem, run.LS, run.A), "CVodeSetLinearSolver");
+  check(CVodeSetJacFn(mem, jacobian_callback), "CVodeSetJacFn");
+  if (options.sensitivities) {
+    run.Ns = n + 1;
+    run.yS = N_VCloneVectorArray(run.Ns, run.y);
+    for (int i = 0; i < run.Ns; ++i) N_VConst(0.0, run.yS[i]);
+    for (int i = 0; i < n; ++i) NV_Ith_S(run.yS[i], i) = 1.0;
+    check(CVodeSensInit(mem, run.Ns, CV_STAGGERED, sensitivity_callback, run.yS), "CVodeSensInit");
+    std::vector<double> abstol(size_t(run.Ns), options.sensitivity_absolute_tolerance);
+    check(CVodeSensSStolerances(mem, options.sensitivity_relative_tolerance, abstol.data()),
+          "CVodeSensSStolerances");
+    check(CVodeSetSensErrCon(mem, options.sensitivity_error_control ? SUNTRUE : SUNFALSE),
+          "CVodeSetSensErrCon");
+  }
+
+  FlowResult out;
+  const int intervals = std::max(1, options.samples);
+  if (options.samples > 0) {
+    out.sample_times_s.push_back(0.0);
+    out.samples.push_back(x0);
+  }
+  // Never step past T (an orbit's end); samples before it are interpolated
+  // (CVODES's dense output), so they do not shorten the steps.
+  check(CVodeSetStopTime(mem, duration_s), "CVodeSetStopTime");
+  for (int k = 1; k <= intervals; ++k) {
+    const double t_out = k == intervals ? duration_s : duration_s * double(k) / intervals;
+    double t_reached = 0.0;
+    const int flag = CVode(mem, t_out, run.y, &t_reached, CV_NORMAL);
+    if (flag < 0) {
+      CVodeGetCurrentTime(mem, &t_reached);
+      std::ostringstream msg;
+      char* name = CVodeGetReturnFlagName(flag);  // malloc'ed per call
+      msg << "integrate_flow: CVODES stopped at t = " << t_reached << " s of " << duration_s
+          << " s (" << name << ")";
+      std::free(name);
+      if (!data.error.empty()) msg << ": " << data.error;
+      throw std::runtime_error(msg.str());
+    }
+    if (options.samples > 0) {
+      out.sample_times_s.push_back(t_out);
+      out.samples.push_back(view(run.y));
+    }
+  }
+  out.end_state = view(run.y);
+  if (options.sensitivities) {
+    double t_reached = 0.0;
+    check(CVodeGetSens(mem, &t_reached, run.yS), "CVodeGetSens");
+    out.state_sensitivity.resize(n, n);
+    for (int i = 0; i < n; ++i) out.state_sensitivity.col(i) = view(run.yS[i]);
+    out.speed_sensitivity = view(run.yS[n]);
+  }
+  long v = 0;
+  CVodeGetNumSteps(mem, &v), out.steps = v;
+  CVodeGetNumRhsEvals(mem, &v), out.rhs_evaluations = v;
+  CVodeGetNumErrTestFails(mem, &v), out.error_test_failures = v;
+  out.jacobian_evaluations = data.jacobian_evaluations;
+  out.cpu_seconds = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
+  return out;
+}
+
+}  // namespace railstab

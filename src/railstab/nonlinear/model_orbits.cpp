@@ -1,0 +1,65 @@
+#include <railstab/nonlinear/model_orbits.hpp>
+
+#include <railstab/core/coordinates.hpp>
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace railstab {
+
+OrbitCoordinates wheelset_orbit_coordinates(const Model& model,
+                                            const std::vector<int>& reduced_states,
+                                            const std::string& wheelset_name) {
+  int body = -1;
+  for (size_t b = 0; b < model.bodies.size(); ++b)
+    if (model.bodies[b].wheelset() && (wheelset_name.empty() || model.bodies[b].name == wheelset_name)) {
+      body = int(b);
+      break;
+    }
+  if (body < 0)
+    throw std::invalid_argument(wheelset_name.empty()
+                                    ? "periodic orbits: the model has no wheelset"
+                                    : "periodic orbits: no wheelset named '" + wheelset_name + "'");
+  int position = -1;
+  for (int k = 0; k < model.n_coordinates; ++k)
+    if (model.coordinate_of_state[size_t(k)] == std::pair<int, int>{body, int(CoordinateIndex::y)})
+      position = k;
+  if (position < 0)
+    throw std::invalid_argument("periodic orbits: the lateral displacement of " +
+                                model.bodies[size_t(body)].name + " is not a free coordinate");
+  auto reduced_index = [&](int full) {
+    const auto it = std::find(reduced_states.begin(), reduced_states.end(), full);
+    if (it == reduced_states.end()) throw std::invalid_argument("periodic orbits: state not in the reduced state");
+    return int(it - reduced_states.begin());
+  };
+  OrbitCoordinates c;
+  c.amplitude_state = reduced_index(position);
+  c.section_state = reduced_index(model.n_coordinates + position);
+  return c;
+}
+
+HopfStart model_hopf_start(const Model& model, const std::vector<int>& reduced_states,
+                           const Eigen::VectorXd& equilibrium_full, const HopfCriticality& hopf,
+                           const OrbitCoordinates& coords) {
+  HopfStart s;
+  s.equilibrium = reduce_state(reduced_states, equilibrium_full);
+  s.critical_speed_m_per_s = hopf.critical_speed_m_per_s;
+  s.eigenvalue = hopf.hopf.eigenvalue;
+  s.eigenvector = Eigen::VectorXcd::Zero(Eigen::Index(reduced_states.size()));
+  for (size_t i = 0; i < reduced_states.size(); ++i) {
+    const auto it = std::find(hopf.kept_states.begin(), hopf.kept_states.end(), reduced_states[i]);
+    if (it == hopf.kept_states.end())
+      throw std::invalid_argument("periodic orbits: state " + model.state_name(reduced_states[i]) +
+                                  " was removed by the linearisation; its mode shape is unknown");
+    s.eigenvector(Eigen::Index(i)) = hopf.hopf.q(Eigen::Index(it - hopf.kept_states.begin()));
+  }
+  s.cycle_side = hopf.cycle_side;
+  s.amplitude_per_sqrt_speed = 0.0;
+  const int full_amplitude_state = reduced_states[size_t(coords.amplitude_state)];
+  const auto it = std::find(hopf.kept_states.begin(), hopf.kept_states.end(), full_amplitude_state);
+  if (it != hopf.kept_states.end() && hopf.amplitude_per_sqrt_speed.size() > 0)
+    s.amplitude_per_sqrt_speed = hopf.amplitude_per_sqrt_speed(Eigen::Index(it - hopf.kept_states.begin()));
+  return s;
+}
+
+}  // namespace railstab

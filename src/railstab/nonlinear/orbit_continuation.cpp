@@ -1,0 +1,234 @@
+#include <railstab/nonlinear/orbit_continuation.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <ctime>
+#include <limits>
+#include <numbers>
+#include <sstream>
+
+namespace railstab {
+
+std::string orbit_bifurcation_name(OrbitBifurcationKind kind) {
+  switch (kind) {
+    case OrbitBifurcationKind::fold: return "fold";
+    case OrbitBifurcationKind::period_doubling: return "period_doubling";
+    case OrbitBifurcationKind::torus: return "torus";
+  }
+  return "fold";
+}
+
+namespace {
+
+// Non-trivial multipliers outside the unit circle.
+int unstable_multipliers(const PeriodicOrbit& o, double tolerance) {
+  int count = 0;
+  for (Eigen::Index k = 0; k < o.floquet_multipliers.size(); ++k)
+    if (k != o.trivial_multiplier && std::abs(o.floquet_multipliers(k)) > 1.0 + tolerance) ++count;
+  return count;
+}
+
+// The non-trivial multiplier of `o` nearest the unit circle.
+std::complex<double> multiplier_nearest_unit_circle(const PeriodicOrbit& o) {
+  std::complex<double> best = 0.0;
+  double distance = std::numeric_limits<double>::infinity();
+  for (Eigen::Index k = 0; k < o.floquet_multipliers.size(); ++k) {
+    if (k == o.trivial_multiplier) continue;
+    const double d = std::abs(std::abs(o.floquet_multipliers(k)) - 1.0);
+    if (d < distance) distance = d, best = o.floquet_multipliers(k);
+  }
+  return best;
+}
+
+// The fold's speed and excursion through three orbits around it: V as a
+// parabola in the excursion a (the fold is a regular point of V(a)); falls
+// back to the middle orbit when the three excursions are not distinct.
+void fold_vertex(const PeriodicOrbit& p, const PeriodicOrbit& c, const PeriodicOrbit& n, int ia,
+                 int amplitude_state, double& V, double& amplitude) {
+  const double a0 = p.start(ia), a1 = c.start(ia), a2 = n.start(ia);
+  const double v0 = p.speed_m_per_s, v1 = c.speed_m_per_s, v2 = n.speed_m_per_s;
+  V = v1, amplitude = c.amplitude(amplitude_state);
+  const double d01 = a0 - a1, d02 = a0 - a2, d12 = a1 - a2;
+  if (d01 == 0.0 || d02 == 0.0 || d12 == 0.0) return;
+  // Lagrange form: V(a) = A a^2 + B a + C.
+  const double A = v0 / (d01 * d02) - v1 / (d01 * d12) + v2 / (d02 * d12);
+  const double B = -v0 * (a1 + a2) / (d01 * d02) + v1 * (a0 + a2) / (d01 * d12) -
+                   v2 * (a0 + a1) / (d02 * d12);
+  if (A == 0.0) return;
+  const double a_star = -B / (2.0 * A);
+  const double lo = std::min({a0, a1, a2}), hi = std::max({a0, a1, a2});
+  if (a_star < lo || a_star > hi) return;
+  const double C = v1 - A * a1 * a1 - B * a1;
+  V = A * a_star * a_star + B * a_star + C;
+  // The excursion scales the half peak-to-peak amplitude: interpolate it.
+  const double s = (a_star - a1) / ((a_star >= a1 ? a2 : a0) - a1);
+  const PeriodicOrbit& other = a_star >= a1 ? n : p;
+  amplitude = c.amplitude(amplitude_state) +
+              s * (other.amplitude(amplitude_state) - c.amplitude(amplitude_state));
+}
+
+void detect_bifurcations(OrbitBranch& branch, int ia, double tolerance) {
+  const auto& o = branch.orbits;
+  const int k = int(o.size()) - 1;  // the orbit just added
+  if (k < 1) return;
+  // Fold in V: the speed turns round at orbit k - 1.
+  if (k >= 2) {
+    const double before = o[size_t(k - 1)].speed_m_per_s - o[size_t(k - 2)].speed_m_per_s;
+    const double after = o[size_t(k)].speed_m_per_s - o[size_t(k - 1)].speed_m_per_s;
+    if (before * after < 0.0) {
+      OrbitBifurcation b;
+      b.kind = OrbitBifurcationKind::fold;
+      b.after_orbit = k - 1;
+      fold_vertex(o[size_t(k - 2)], o[size_t(k - 1)], o[size_t(k)], ia, ia, b.speed_m_per_s,
+                  b.amplitude);
+      b.multiplier = multiplier_nearest_unit_circle(o[size_t(k - 1)]);
+      branch.bifurcations.push_back(b);
+    }
+  }
+  // Stability changes other than at a fold: a multiplier leaving or
+  // entering the unit circle at -1 or as a complex pair.
+  const PeriodicOrbit &a = o[size_t(k - 1)], &c = o[size_t(k)];
+  if (unstable_multipliers(a, tolerance) == unstable_multipliers(c, tolerance)) return;
+  const std::complex<double> mu = multiplier_nearest_unit_circle(c);
+  const bool real = std::abs(mu.imag()) <= 1e-6 * std::abs(mu);
+  if (real && mu.real() > 0.0) return;  // +1: the fold (recorded above)
+  OrbitBifurcation b;
+  b.kind = real ? OrbitBifurcationKind::period_doubling : OrbitBifurcationKind::torus;
+  b.after_orbit = k - 1;
+  b.multiplier = mu;
+  const double ma = std::abs(multiplier_nearest_unit_circle(a)) - 1.0, mc = std::abs(mu) - 1.0;
+  const double s = ma == mc ? 0.5 : ma / (ma - mc);
+  b.speed_m_per_s = a.speed_m_per_s + s * (c.speed_m_per_s - a.speed_m_per_s);
+  b.amplitude = a.amplitude(ia) + s * (c.amplitude(ia) - a.amplitude(ia));
+  branch.bifurcations.push_back(b);
+}
+
+}  // namespace
+
+OrbitBranch continue_branch(const FlowSystem& system, const OrbitCoordinates& coords,
+                            std::vector<PeriodicOrbit> first_two,
+                            const ContinuationOptions& options) {
+  if (first_two.size() != 2)
+    throw std::invalid_argument("continue_branch: needs the branch's first two orbits");
+  const std::clock_t cpu0 = std::clock();
+  const int ia = coords.amplitude_state;
+  const double sV = options.speed_scale_m_per_s, sa = options.amplitude_scale;
+  OrbitBranch branch;
+  branch.orbits = std::move(first_two);
+  const double tol = options.shooting.multiplier_tolerance;
+  detect_bifurcations(branch, ia, tol);
+  double h = options.initial_step;
+  auto finish = [&](std::string reason) {
+    branch.stop_reason = std::move(reason);
+    branch.cpu_seconds = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
+    return branch;
+  };
+  while (true) {
+    const PeriodicOrbit& c = branch.orbits.back();
+    const PeriodicOrbit& p = branch.orbits[branch.orbits.size() - 2];
+    if (options.progress) options.progress(int(branch.orbits.size()), c.speed_m_per_s, c.amplitude(ia));
+    if (int(branch.orbits.size()) >= options.max_orbits) return finish("orbit limit reached");
+    if (c.speed_m_per_s < options.min_speed_m_per_s) return finish("below the speed range");
+    if (c.speed_m_per_s > options.max_speed_m_per_s) return finish("above the speed range");
+    if (c.amplitude(ia) > options.max_amplitude) return finish("amplitude limit reached");
+    // The unit secant in the scaled plane, and per unit arclength for every unknown.
+    const double dV = (c.speed_m_per_s - p.speed_m_per_s) / sV;
+    const double da = (c.start(ia) - p.start(ia)) / sa;
+    const double length = std::hypot(dV, da);
+    if (!(length > 0.0)) return finish("two identical orbits: no direction");
+    const double tV = dV / length, ta = da / length;
+    bool accepted = false;
+    while (!accepted) {
+      if (h < options.min_step) return finish("step-size floor reached");
+      const double g = h / length;  // fraction of the last secant
+      const Eigen::VectorXd x_pred = c.start + g * (c.start - p.start);
+      const double T_pred = c.period_s + g * (c.period_s - p.period_s);
+      const double V_pred = c.speed_m_per_s + g * (c.speed_m_per_s - p.speed_m_per_s);
+      OrbitConstraint constraint{tV / sV, ta / sa, V_pred, x_pred(ia)};
+      try {
+        PeriodicOrbit next = solve_periodic_orbit(system, coords, constraint, x_pred, T_pred,
+                                                  V_pred, options.shooting);
+        // Refuse a jump back along the branch or onto another one: the new
+        // secant must point the way of the last.
+        const double nV = (next.speed_m_per_s - c.speed_m_per_s) / sV;
+        const double na = (next.start(ia) - c.start(ia)) / sa;
+        if (nV * tV + na * ta <= 0.0) throw ShootingFailure("the corrector went backwards");
+        const int iterations = next.newton_iterations;
+        branch.orbits.push_back(std::move(next));
+        accepted = true;
+        if (iterations <= options.fast_newton_iterations)
+          h = std::min(options.max_step, h * options.growth_factor);
+      } catch (const ShootingFailure&) {
+        ++branch.failed_correctors;
+        h /= 2.0;
+      }
+    }
+    detect_bifurcations(branch, ia, tol);
+    if (branch.orbits.back().amplitude(ia) < 1e-3 * options.amplitude_scale &&
+        branch.orbits.back().amplitude(ia) < branch.orbits[branch.orbits.size() - 2].amplitude(ia))
+      return finish("back at the steady state (the orbit shrank to zero)");
+  }
+}
+
+OrbitBranch continue_from_orbit(const FlowSystem& system, const OrbitCoordinates& coords,
+                                const PeriodicOrbit& first, double speed_step_m_per_s,
+                                const ContinuationOptions& options) {
+  const double V2 = first.speed_m_per_s + speed_step_m_per_s;
+  PeriodicOrbit second = solve_periodic_orbit(system, coords, OrbitConstraint::fixed_speed(V2),
+                                              first.start, first.period_s, V2, options.shooting);
+  return continue_branch(system, coords, {first, std::move(second)}, options);
+}
+
+OrbitBranch continue_from_hopf(const FlowSystem& system, const OrbitCoordinates& coords,
+                               const HopfStart& start, double first_excursion,
+                               const ContinuationOptions& options) {
+  const int ia = coords.amplitude_state;
+  const Eigen::VectorXcd& q = start.eigenvector;
+  if (q.size() != system.size || start.equilibrium.size() != system.size)
+    throw std::invalid_argument("continue_from_hopf: equilibrium or eigenvector of the wrong size");
+  if (std::abs(q(ia)) == 0.0)
+    throw std::invalid_argument(
+        "continue_from_hopf: the critical mode does not move the amplitude state");
+  if (!(start.eigenvalue.imag() > 0.0))
+    throw std::invalid_argument("continue_from_hopf: the critical eigenvalue is not a pair");
+  // x = x_eq + c Re(q e^{i theta}): theta = -arg q_a puts the excursion at
+  // its maximum, where its rate (the section state) is 0.
+  const std::complex<double> phase = std::polar(1.0, -std::arg(q(ia)));
+  const Eigen::VectorXd shape = (q * phase).real() / std::abs(q(ia));
+  const double period = 2.0 * std::numbers::pi / start.eigenvalue.imag();
+  auto predicted_speed = [&](double excursion) {
+    if (start.cycle_side == 0 || !(start.amplitude_per_sqrt_speed > 0.0))
+      return start.critical_speed_m_per_s;
+    const double r = excursion / start.amplitude_per_sqrt_speed;
+    return start.critical_speed_m_per_s + start.cycle_side * r * r;
+  };
+  std::vector<PeriodicOrbit> first_two;
+  for (double excursion : {first_excursion, 2.0 * first_excursion}) {
+    const Eigen::VectorXd guess = start.equilibrium + excursion * shape;
+    const double a = start.equilibrium(ia) + excursion;
+    first_two.push_back(solve_periodic_orbit(system, coords, OrbitConstraint::fixed_excursion(a),
+                                             guess, period, predicted_speed(excursion),
+                                             options.shooting));
+  }
+  return continue_branch(system, coords, std::move(first_two), options);
+}
+
+double lowest_stable_speed(const OrbitBranch& branch) {
+  double lowest = std::numeric_limits<double>::quiet_NaN();
+  auto take = [&](double v) {
+    if (std::isnan(lowest) || v < lowest) lowest = v;
+  };
+  for (const PeriodicOrbit& o : branch.orbits)
+    if (o.stable) take(o.speed_m_per_s);
+  for (const OrbitBifurcation& b : branch.bifurcations)
+    if (b.kind == OrbitBifurcationKind::fold) {
+      const size_t k = size_t(b.after_orbit);
+      const bool next_to_stable = branch.orbits[k].stable ||
+                                  (k > 0 && branch.orbits[k - 1].stable) ||
+                                  (k + 1 < branch.orbits.size() && branch.orbits[k + 1].stable);
+      if (next_to_stable) take(b.speed_m_per_s);
+    }
+  return lowest;
+}
+
+}  // namespace railstab

@@ -1,0 +1,401 @@
+// Periodic orbits by shooting, their Floquet multipliers and the branch's
+// continuation, against references no one tuned to:
+// - the Hopf normal form (supercritical) with a stiff slave state: the orbit
+//   r = sqrt(alpha), T = 2 pi / omega, multipliers 1, exp(-2 alpha T) and
+//   exp(-50 T) in closed form;
+// - the Bautin normal form r' = r (alpha + r^2 - r^4) (subcritical Hopf
+//   with a fold of cycles at alpha = -1/4, r^2 = 1/2): the branch from the
+//   Hopf point goes round the fold, unstable below it and stable above, with
+//   the multiplier exp(T (2 r^2 - 4 r^4)), and a perturbed run decays like it;
+// - on the thesis bogie (knife-edge, Hertz, Kalker: smooth) the monodromy
+//   matrix and d phi/dV against central differences of the flow;
+// - on the thesis vehicle, the branch from the Hopf point starts at the
+//   linear critical speed with the period 2 pi / Im(lambda) and follows the
+//   first Lyapunov coefficient's square-root law; a plain time-domain run
+//   from an orbit returns to it after one period.
+#include <gtest/gtest.h>
+
+#include <railstab/integrate/integrator.hpp>
+#include <railstab/model/equations_of_motion.hpp>
+#include <railstab/nonlinear/flow_sensitivity.hpp>
+#include <railstab/nonlinear/hopf_criticality.hpp>
+#include <railstab/nonlinear/model_orbits.hpp>
+#include <railstab/nonlinear/orbit_continuation.hpp>
+#include <railstab/nonlinear/periodic_orbit.hpp>
+#include <railstab/setup/prepare_scene.hpp>
+#include <railstab/stability/speed_analysis.hpp>
+
+#include <cmath>
+#include <cstdlib>
+#include <cstdio>
+#include <ctime>
+#include <numbers>
+#include <string>
+
+using namespace railstab;
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kOmega = 2.0 * kPi;  // 1 Hz
+constexpr double kHopfSpeed = 10.0;   // alpha = V - kHopfSpeed
+
+// x' = a x - w y + s x g(r^2), y' = w x + a y + s y g(r^2), z' = -50 z + x^2;
+// supercritical: g = -r^2; Bautin: g = r^2 - r^4.
+FlowSystem normal_form(bool bautin) {
+  FlowSystem s;
+  s.size = 3;
+  s.state_names = {"x", "y", "z"};
+  s.rhs = [bautin](const Eigen::VectorXd& x, double V, Eigen::VectorXd& f) {
+    const double a = V - kHopfSpeed, r2 = x(0) * x(0) + x(1) * x(1);
+    const double g = bautin ? r2 - r2 * r2 : -r2;
+    f.resize(3);
+    f << a * x(0) - kOmega * x(1) + x(0) * g, kOmega * x(0) + a * x(1) + x(1) * g,
+        -50.0 * x(2) + x(0) * x(0);
+  };
+  s.jacobian = [bautin](const Eigen::VectorXd& x, double V, Eigen::MatrixXd& J) {
+    const double a = V - kHopfSpeed, r2 = x(0) * x(0) + x(1) * x(1);
+    const double g = bautin ? r2 - r2 * r2 : -r2, dg = bautin ? 1.0 - 2.0 * r2 : -1.0;
+    J.setZero(3, 3);
+    J(0, 0) = a + g + 2.0 * x(0) * x(0) * dg;
+    J(0, 1) = -kOmega + 2.0 * x(0) * x(1) * dg;
+    J(1, 0) = kOmega + 2.0 * x(0) * x(1) * dg;
+    J(1, 1) = a + g + 2.0 * x(1) * x(1) * dg;
+    J(2, 0) = 2.0 * x(0);
+    J(2, 2) = -50.0;
+  };
+  return s;  // df/dV by the central difference (FlowSystem's default)
+}
+
+// Section: y = 0 (the rate of x at its maximum up to the factor -w);
+// excursion: x.
+const OrbitCoordinates kNormalFormCoords{1, 0};
+
+// The slave state on the orbit x = r cos(w t): z = r^2 (1/100 + (50 cos 2wt
+// + 2w sin 2wt) / (2 (2500 + 4 w^2))) at the section (t = 0).
+double slave_at_section(double r) {
+  return r * r * (1.0 / 100.0 + 50.0 / (2.0 * (2500.0 + 4.0 * kOmega * kOmega)));
+}
+
+// The closed-form checks test the method, so the flow runs far tighter than
+// the defaults (state rtol 1e-8, sensitivities 1e-5, Newton 1e-7, which
+// leave errors of about 1e-7 in r and 1e-8 in T on these systems).
+ShootingOptions tight_shooting() {
+  ShootingOptions o;
+  o.flow.relative_tolerance = 1e-11;
+  o.flow.absolute_tolerance = 1e-14;
+  o.flow.sensitivity_relative_tolerance = 1e-10;
+  o.flow.sensitivity_absolute_tolerance = 1e-13;
+  o.newton_relative_tolerance = 1e-9;
+  return o;
+}
+
+}  // namespace
+
+TEST(PeriodicOrbitNormalForm, RadiusPeriodAndMultipliersMatchTheClosedForm) {
+  const FlowSystem s = normal_form(false);
+  const double V = kHopfSpeed + 0.09;  // alpha 0.09: r = 0.3
+  Eigen::VectorXd guess(3);
+  guess << 0.28, 0.0, 0.0;
+  const PeriodicOrbit o = solve_periodic_orbit(s, kNormalFormCoords, OrbitConstraint::fixed_speed(V),
+                                               guess, 1.02, V, tight_shooting());
+  const double T = 1.0 / (kOmega / (2.0 * kPi));
+  EXPECT_NEAR(o.start(0), 0.3, 1e-9);
+  EXPECT_NEAR(o.start(2), slave_at_section(0.3), 1e-9);
+  EXPECT_NEAR(o.period_s, T, 1e-9 * T);
+  EXPECT_NEAR(o.speed_m_per_s, V, 0.0);
+  EXPECT_NEAR(o.amplitude(0), 0.3, 1e-6);  // from 200 interpolated samples
+  ASSERT_EQ(o.floquet_multipliers.size(), 3);
+  EXPECT_LT(o.trivial_multiplier_error, 1e-7);
+  EXPECT_NEAR(std::abs(o.critical_multiplier - std::exp(-2.0 * 0.09 * T)), 0.0, 1e-7);
+  EXPECT_NEAR(std::abs(o.floquet_multipliers(2)), std::exp(-50.0 * T), 1e-9);
+  EXPECT_TRUE(o.stable);
+  EXPECT_LT(o.periodicity_residual, 1e-8);
+  EXPECT_LE(o.newton_iterations, 6);
+}
+
+TEST(PeriodicOrbitNormalForm, BadGuessesAndCoordinatesAreRefused) {
+  const FlowSystem s = normal_form(false);
+  Eigen::VectorXd guess(3);
+  guess << 0.25, 0.0, 0.0;
+  EXPECT_THROW(solve_periodic_orbit(s, {0, 0}, OrbitConstraint::fixed_speed(10.1), guess, 1.0, 10.1),
+               std::invalid_argument);
+  EXPECT_THROW(solve_periodic_orbit(s, kNormalFormCoords, OrbitConstraint::fixed_speed(10.1),
+                                    Eigen::VectorXd::Zero(2), 1.0, 10.1),
+               std::invalid_argument);
+  // Below the Hopf point there is no cycle: Newton collapses onto the
+  // steady state (a "periodic orbit" of any period), which is refused.
+  EXPECT_THROW(solve_periodic_orbit(s, kNormalFormCoords, OrbitConstraint::fixed_speed(9.9), guess,
+                                    1.0, 9.9),
+               ShootingFailure);
+}
+
+TEST(OrbitContinuationBautin, BranchFromTheHopfPointGoesRoundTheFold) {
+  const FlowSystem s = normal_form(true);
+  HopfStart start;
+  start.equilibrium = Eigen::VectorXd::Zero(3);
+  start.critical_speed_m_per_s = kHopfSpeed;
+  start.eigenvalue = {0.0, kOmega};
+  start.eigenvector = Eigen::VectorXcd::Zero(3);
+  start.eigenvector << 1.0, std::complex<double>(0.0, -1.0), 0.0;  // x = cos, y = sin
+  start.cycle_side = -1;               // subcritical: l1 > 0, cycles below V_c
+  start.amplitude_per_sqrt_speed = 1.0;  // r^2 = -alpha near 0
+  ContinuationOptions opt;
+  opt.shooting = tight_shooting();
+  opt.amplitude_scale = 0.1;
+  opt.initial_step = 0.5;
+  opt.max_step = 1.0;
+  opt.max_amplitude = 1.1;
+  const OrbitBranch b = continue_from_hopf(s, kNormalFormCoords, start, 0.05, opt);
+  ASSERT_GE(b.orbits.size(), 10u);
+  EXPECT_EQ(b.stop_reason, "amplitude limit reached");
+  const double T = 1.0;
+  int stable = 0, unstable = 0;
+  for (const PeriodicOrbit& o : b.orbits) {
+    const double r = o.start(0), r2 = r * r;
+    // On the branch alpha = r^4 - r^2; period 1 s; multiplier exp(T (2 r^2 - 4 r^4)).
+    EXPECT_NEAR(o.speed_m_per_s - kHopfSpeed, r2 * r2 - r2, 1e-8) << "r = " << r;
+    EXPECT_NEAR(o.period_s, T, 1e-9);
+    const double mu = std::exp(T * (2.0 * r2 - 4.0 * r2 * r2));
+    EXPECT_NEAR(o.critical_multiplier.real(), mu, 1e-6 * mu) << "r = " << r;
+    if (std::abs(r2 - 0.5) > 0.02) {
+      EXPECT_EQ(o.stable, r2 > 0.5) << "r = " << r;
+      (o.stable ? stable : unstable)++;
+    }
+  }
+  EXPECT_GT(stable, 2);
+  EXPECT_GT(unstable, 2);
+  // One fold, at alpha = -1/4 (the parabola through three orbits: its error
+  // is third order in the step).
+  ASSERT_EQ(b.bifurcations.size(), 1u);
+  EXPECT_EQ(b.bifurcations[0].kind, OrbitBifurcationKind::fold);
+  EXPECT_NEAR(b.bifurcations[0].speed_m_per_s, kHopfSpeed - 0.25, 2e-3);
+  EXPECT_NEAR(b.bifurcations[0].amplitude, std::sqrt(0.5), 0.05);
+  EXPECT_NEAR(lowest_stable_speed(b), kHopfSpeed - 0.25, 2e-3);
+  // The first orbits: small excursions at the predicted speeds.
+  EXPECT_NEAR(b.orbits[0].start(0), 0.05, 1e-12);
+  EXPECT_NEAR(b.orbits[1].start(0), 0.10, 1e-12);
+  std::printf("[ bautin   ] %zu orbits, %d failed correctors, fold at %.6f (exact %.6f), CPU %.2f s\n",
+              b.orbits.size(), b.failed_correctors, b.bifurcations[0].speed_m_per_s,
+              kHopfSpeed - 0.25, b.cpu_seconds);
+}
+
+// The multiplier against the decay of a perturbed run: on the stable orbit
+// r^2 = 0.8 (alpha = 0.64 - 0.8), a start at radius r + d returns after k
+// periods at r + mu^k d (to first order in d).
+TEST(OrbitContinuationBautin, MultiplierOfAStableOrbitMatchesThePerturbedRunsDecay) {
+  const FlowSystem s = normal_form(true);
+  const double r = std::sqrt(0.8), V = kHopfSpeed + 0.64 - 0.8;
+  Eigen::VectorXd guess(3);
+  guess << r, 0.0, 0.0;
+  const PeriodicOrbit o = solve_periodic_orbit(s, kNormalFormCoords, OrbitConstraint::fixed_speed(V),
+                                               guess, 1.0, V, tight_shooting());
+  ASSERT_TRUE(o.stable);
+  const double d = 1e-5;
+  Eigen::VectorXd x = o.start;
+  x(0) += d;
+  FlowOptions plain;
+  plain.sensitivities = false;
+  plain.relative_tolerance = 1e-11;
+  plain.absolute_tolerance = 1e-14;
+  const FlowResult run = integrate_flow(s, x, V, 3.0 * o.period_s, plain);
+  const double measured = (run.end_state.head(2).norm() - r) / d;
+  const double mu3 = std::pow(o.critical_multiplier.real(), 3);
+  EXPECT_NEAR(measured, mu3, 2e-3 * std::abs(mu3) + 1e-4);
+}
+
+namespace {
+
+struct PreparedModelFlow {
+  PreparedScene scene;
+  std::vector<int> reduced;
+  FlowSystem system;
+};
+
+PreparedModelFlow model_flow(const std::string& case_name) {
+  PreparedModelFlow p{prepare_scene(std::string(RAILSTAB_CASES_DIR) + "/" + case_name, {}), {}, {}};
+  p.system = model_flow_system(p.scene.model, 0.0, &p.reduced);
+  return p;
+}
+
+double cpu_now() { return double(std::clock()) / CLOCKS_PER_SEC; }
+
+}  // namespace
+
+// The flow's sensitivities against central differences of the flow itself,
+// on the thesis bogie at its scene speed over 0.2 s (about a quarter of the slowly
+// decaying hunting period) from a state on a settled motion: 1 s of a plain
+// run from the steady state with wheelset1 displaced 1 mm (a raw
+// displacement would start with the wheels bouncing on the rail, contact
+// lost and regained, where the flow is not differentiable). Steps: 1e-6 of
+// each state's size (1e-3 floor); the flows at rtol 1e-11, the
+// sensitivities at rtol 1e-9. Column-wise error relative to the column's
+// norm.
+TEST(FlowSensitivity, MonodromyAndSpeedSensitivityMatchCentralDifferencesOfTheFlow) {
+  const PreparedModelFlow p = model_flow("thesis_bogie_tangent.toml");
+  const FlowSystem& s = p.system;
+  const double V = p.scene.speed_m_per_s, T = 0.2;
+  const OrbitCoordinates c = wheelset_orbit_coordinates(p.scene.model, p.reduced);
+  Eigen::VectorXd start = p.scene.equilibrium.state;
+  start(p.reduced[size_t(c.amplitude_state)]) += 1e-3;
+  IntegrationOptions settle;
+  settle.t_end_s = settle.output_interval_s = 1.0;
+  const Trajectory run = integrate(p.scene.model, V, start, settle);
+  for (const ContactEvent& e : run.events)  // the start's bounce only
+    ASSERT_LT(e.time_s, 0.5) << e.description;
+  const Eigen::VectorXd x0 = reduce_state(p.reduced, run.states.back());
+  FlowOptions tight;
+  tight.relative_tolerance = 1e-11;
+  tight.absolute_tolerance = 1e-14;
+  tight.sensitivity_relative_tolerance = 1e-9;
+  tight.sensitivity_absolute_tolerance = 1e-12;
+  const double cpu0 = cpu_now();
+  const FlowResult exact = integrate_flow(s, x0, V, T, tight);
+  const double cpu_sens = cpu_now() - cpu0;
+  FlowOptions plain = tight;
+  plain.sensitivities = false;
+  double worst = 0.0;
+  for (int j = 0; j < s.size; ++j) {
+    // 1e-5 (m, rad, m/s, rad/s; relative for the spin rates): the spin
+    // rates' integration noise (rtol 1e-11 of 44 rad/s) must stay small
+    // against h times the column. The wheelsets' vertical and roll
+    // positions compress the Hertz contact (force ~ delta^1.5 over ~0.1 mm):
+    // 1e-7 there keeps the truncation error small.
+    const std::string& name = s.state_names[size_t(j)];
+    const bool hertz = name.find("wheelset") == 0 && (name.ends_with(".z_m") || name.ends_with(".roll_rad"));
+    const double h = (hertz ? 1e-7 : 1e-5) * std::max(std::abs(x0(j)), 1.0);
+    Eigen::VectorXd up = x0, down = x0;
+    up(j) += h, down(j) -= h;
+    const Eigen::VectorXd fd = (integrate_flow(s, up, V, T, plain).end_state -
+                                integrate_flow(s, down, V, T, plain).end_state) / (2.0 * h);
+    const double err = (fd - exact.state_sensitivity.col(j)).norm() /
+                       std::max(exact.state_sensitivity.col(j).norm(), 1e-12);
+    if (err > 1e-3)
+      std::printf("  column %d (%s): error %.2e, |exact| %.2e, |fd| %.2e, h %.1e\n", j,
+                  s.state_names[size_t(j)].c_str(), err, exact.state_sensitivity.col(j).norm(),
+                  fd.norm(), h);
+    worst = std::max(worst, err);
+  }
+  const double hV = 1e-4;
+  const Eigen::VectorXd fdV = (integrate_flow(s, x0, V + hV, T, plain).end_state -
+                               integrate_flow(s, x0, V - hV, T, plain).end_state) / (2.0 * hV);
+  const double errV = (fdV - exact.speed_sensitivity).norm() / exact.speed_sensitivity.norm();
+  std::printf("[ bogie    ] %d states: monodromy vs central differences %.2e (worst column), "
+              "d phi/dV %.2e; flow with sensitivities %.3f s CPU, %ld steps, %ld Jacobians\n",
+              s.size, worst, errV, cpu_sens, exact.steps, exact.jacobian_evaluations);
+  // The differences' own error (truncation and noise, see the steps) is
+  // the limit here, not X's (rtol 1e-9).
+  EXPECT_LT(worst, 2e-3);
+  EXPECT_LT(errV, 1e-5);
+}
+
+// The spin angles are the reduced state's only omission, and f does not
+// depend on them (so the reduced flow is the model's).
+TEST(FlowSensitivity, ReducedModelDropsOnlyTheSpinAnglesWhichDoNotEnterF) {
+  const PreparedModelFlow p = model_flow("thesis_bogie_tangent.toml");
+  const Model& m = p.scene.model;
+  EXPECT_EQ(int(p.reduced.size()), m.state_size() - 2);  // two wheelsets
+  Eigen::VectorXd full = p.scene.equilibrium.state;
+  full(3) += 0.0;
+  Eigen::VectorXd f_reduced;
+  p.system.rhs(reduce_state(p.reduced, full), 30.0, f_reduced);
+  for (int k = 0; k < m.state_size(); ++k)
+    if (std::find(p.reduced.begin(), p.reduced.end(), k) == p.reduced.end()) {
+      Eigen::VectorXd turned = full;
+      turned(k) += 1.234;  // any spin angle
+      const Eigen::VectorXd f = rhs(m, 30.0, 0.0, turned);
+      EXPECT_EQ((reduce_state(p.reduced, f) - f_reduced).cwiseAbs().maxCoeff(), 0.0) << m.state_name(k);
+    }
+}
+
+namespace {
+
+struct ThesisBranchStart {
+  PreparedModelFlow flow;
+  CriticalSpeedResult critical;
+  HopfCriticality hopf;
+  OrbitCoordinates coords;
+  HopfStart start;
+  OrbitBranch first_two;  // the branch's first two orbits, a = 0.05 and 0.1 mm
+  double first_two_cpu_s = 0.0;
+};
+
+const ThesisBranchStart& thesis_vehicle_start() {
+  static const ThesisBranchStart t = [] {
+    ThesisBranchStart s{model_flow("thesis_vehicle_tangent.toml"), {}, {}, {}, {}, {}, 0.0};
+    CriticalSpeedOptions opt;
+    opt.from_m_per_s = 80.0;
+    opt.to_m_per_s = 130.0;
+    opt.grid_step_m_per_s = 5.0;
+    opt.tolerance_m_per_s = 1e-6;
+    s.critical = find_critical_speed(s.flow.scene.model, s.flow.scene.equilibrium.state,
+                                     s.flow.scene.speed_m_per_s, opt);
+    s.hopf = hopf_criticality(s.flow.scene.model, s.critical);
+    s.coords = wheelset_orbit_coordinates(s.flow.scene.model, s.flow.reduced);
+    s.start = model_hopf_start(s.flow.scene.model, s.flow.reduced, s.critical.at_critical.equilibrium.state,
+                               s.hopf, s.coords);
+    ContinuationOptions copt;
+    copt.max_orbits = 2;
+    const double cpu0 = cpu_now();
+    s.first_two = continue_from_hopf(s.flow.system, s.coords, s.start, 5e-5, copt);
+    s.first_two_cpu_s = cpu_now() - cpu0;
+    return s;
+  }();
+  return t;
+}
+
+}  // namespace
+
+// The branch's first orbits at excursions a = 0.05 and 0.1 mm of wheelset1:
+// V(a) = V_c + (a / k)^2 and T(a) = T0 + O(a^2), so (4 V1 - V2) / 3 and
+// (4 T1 - T2) / 3 are the zero-amplitude limits (error O(a^4)).
+TEST(OrbitContinuationThesisVehicle, BranchStartsAtTheHopfPointAndFollowsTheSquareRootLaw) {
+  const ThesisBranchStart& t = thesis_vehicle_start();
+  ASSERT_TRUE(t.critical.critical_speed_found);
+  ASSERT_EQ(t.hopf.kind, HopfKind::supercritical);
+  const OrbitBranch& b = t.first_two;
+  const double cpu = t.first_two_cpu_s;
+  ASSERT_GE(b.orbits.size(), 2u);
+  const PeriodicOrbit &o1 = b.orbits[0], &o2 = b.orbits[1];
+  const double Vc = t.critical.critical_speed_m_per_s;
+  const double T0 = 2.0 * kPi / t.hopf.hopf.eigenvalue.imag();
+  const double V0 = (4.0 * o1.speed_m_per_s - o2.speed_m_per_s) / 3.0;
+  const double Tlim = (4.0 * o1.period_s - o2.period_s) / 3.0;
+  EXPECT_NEAR(V0, Vc, 0.01);
+  EXPECT_NEAR(Tlim, T0, 1e-6 * T0);
+  for (const PeriodicOrbit* o : {&o1, &o2}) {
+    const double a = o->amplitude(t.coords.amplitude_state);
+    const double predicted = predicted_amplitude(t.hopf, "wheelset1.y_m", o->speed_m_per_s);
+    EXPECT_NEAR(a, predicted, 0.01 * a) << "at " << o->speed_m_per_s << " m/s";
+    // Supercritical: the small cycles are stable, their multiplier
+    // exp(-2 Re(lambda(V)) T) within 1e-6 of 1 this near V_c: not above it.
+    EXPECT_LT(std::abs(o->critical_multiplier), 1.0 + 1e-6);
+  }
+  std::printf("[ thesis   ] Hopf %.6f m/s, T0 %.8f s; orbits at a = %.3f, %.3f mm: V - Vc = %.3e, "
+              "%.3e m/s, limit V0 - Vc %.2e m/s, T %.8f s; %zu orbits in %.2f s CPU (%ld steps, "
+              "%ld Jacobians for the first)\n",
+              Vc, T0, 1e3 * o1.amplitude(t.coords.amplitude_state),
+              1e3 * o2.amplitude(t.coords.amplitude_state), o1.speed_m_per_s - Vc,
+              o2.speed_m_per_s - Vc, V0 - Vc, Tlim, b.orbits.size(), cpu, o1.integration_steps,
+              o1.jacobian_evaluations);
+}
+
+// An orbit of the branch is a solution of the product's time domain: a
+// plain run (integrate(), CVODE BDF at rtol 1e-10) from its start returns
+// to it after one period within 1e-6 of the amplitude.
+TEST(OrbitContinuationThesisVehicle, PlainRunFromAnOrbitReturnsToItAfterOnePeriod) {
+  const ThesisBranchStart& t = thesis_vehicle_start();
+  const OrbitBranch& b = t.first_two;
+  const PeriodicOrbit& o = b.orbits.back();
+  IntegrationOptions io;
+  io.t_end_s = o.period_s;
+  io.output_interval_s = o.period_s;
+  io.relative_tolerance = 1e-10;
+  io.absolute_tolerance = 1e-13;
+  const Trajectory run = integrate(t.flow.scene.model, o.speed_m_per_s,
+                                   embed_state(t.flow.scene.model, t.flow.reduced, o.start), io);
+  ASSERT_TRUE(run.stopped_early.empty()) << run.stopped_early;
+  const Eigen::VectorXd back = reduce_state(t.flow.reduced, run.states.back());
+  const double scale = o.amplitude.cwiseAbs().maxCoeff();
+  EXPECT_LT((back - o.start).cwiseAbs().maxCoeff(), 1e-6 * scale);
+}
