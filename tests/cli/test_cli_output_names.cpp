@@ -55,14 +55,27 @@ std::string convention_broken(const std::string& name) {
   return "";
 }
 
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::size_t from = 0;
+  while (from < text.size()) {
+    const std::size_t end = text.find('\n', from);
+    lines.push_back(text.substr(from, end == std::string::npos ? std::string::npos : end - from));
+    if (end == std::string::npos) break;
+    from = end + 1;
+  }
+  return lines;
+}
+
 // Keys at the start of a JSON line (the writer puts every key on its own
 // line); keys naming a scene key or a body coordinate (holding '.') are the
 // scene's own names.
 std::vector<std::string> json_keys(const std::string& text) {
-  static const std::regex key("^\\s*\"((?:[^\"\\\\]|\\\\.)*)\":", std::regex::multiline);
+  static const std::regex key("^\\s*\"((?:[^\"\\\\]|\\\\.)*)\":");
   std::vector<std::string> keys;
-  for (auto it = std::sregex_iterator(text.begin(), text.end(), key); it != std::sregex_iterator(); ++it)
-    keys.push_back((*it)[1]);
+  std::smatch m;
+  for (const std::string& line : lines_of(text))
+    if (std::regex_search(line, m, key)) keys.push_back(m[1]);
   return keys;
 }
 
@@ -73,7 +86,8 @@ std::vector<std::string> csv_columns(const std::string& text) {
   for (;;) {
     const std::size_t comma = header.find(',', from);
     std::string c = header.substr(from, comma == std::string::npos ? std::string::npos : comma - from);
-    // <body>.y_m: the coordinate's name after the body's.
+    // <body>.y_m: the coordinate's name after the body's; a study's
+    // column for a varied scene key: its last part.
     if (const std::size_t dot = c.rfind('.'); dot != std::string::npos && c.find('=') == std::string::npos)
       c = c.substr(dot + 1);
     columns.push_back(c);
@@ -83,11 +97,14 @@ std::vector<std::string> csv_columns(const std::string& text) {
   return columns;
 }
 
+// key = value at the start of a line (tables' keys, indented in arrays of
+// tables) or inside an inline table.
 std::vector<std::string> toml_keys(const std::string& text) {
-  static const std::regex key("(?:^|[{,]\\s*)([A-Za-z_][A-Za-z0-9_]*) = ", std::regex::multiline);
+  static const std::regex key("(?:^\\s*|[{,]\\s*)([A-Za-z_][A-Za-z0-9_]*) = ");
   std::vector<std::string> keys;
-  for (auto it = std::sregex_iterator(text.begin(), text.end(), key); it != std::sregex_iterator(); ++it)
-    keys.push_back((*it)[1]);
+  for (const std::string& line : lines_of(text))
+    for (auto it = std::sregex_iterator(line.begin(), line.end(), key); it != std::sregex_iterator(); ++it)
+      keys.push_back((*it)[1]);
   return keys;
 }
 
@@ -145,11 +162,17 @@ TEST(CliOutputNames, EveryKeyAndColumnFollowsTheNamingConvention) {
       }
       // `scene` is the scene's name, `scene_file` its path, in every output.
       if (ext == ".json") {
+        static const std::regex scene("^\\s*\"scene\": \"([^\"]*)\""),
+            scene_file("^\\s*\"scene_file\": \"([^\"]*)\"");
         std::smatch m;
-        if (std::regex_search(text, m, std::regex("\"scene\": \"([^\"]*)\"")))
-          EXPECT_EQ(m[1].str().find(".toml"), std::string::npos) << p.filename() << ": " << m[1];
-        if (std::regex_search(text, m, std::regex("\"scene_file\": \"([^\"]*)\"")))
-          EXPECT_NE(m[1].str().find(".toml"), std::string::npos) << p.filename() << ": " << m[1];
+        for (const std::string& line : lines_of(text)) {
+          if (std::regex_search(line, m, scene)) {
+            EXPECT_EQ(m[1].str(), "textbook_wheelset") << p.filename() << ": " << line;
+          }
+          if (std::regex_search(line, m, scene_file)) {
+            EXPECT_NE(m[1].str().find(".toml"), std::string::npos) << p.filename() << ": " << line;
+          }
+        }
       }
     }
     EXPECT_GT(files, 0u) << c.args[0];
