@@ -43,7 +43,7 @@ drop_series_dampers() {
 # "none"), scene copy. Appends a CSV row and a gnuplot data row.
 csv=$work/study.csv
 dat=$work/study.dat
-echo "variant,series_stiffness_N_per_m,critical_speed_m_s,frequency_hz,mode,stable_up_to_m_s,run_time_s" > "$csv"
+echo "variant,series_stiffness_N_per_m,critical_speed_m_per_s,hunting_frequency_Hz,hunting_mode,stable_up_to_m_per_s,run_time_s" > "$csv"
 run() {
   local label=$1 k=$2 file=$3
   local t0 t1 json v f mode stable_to=""
@@ -56,10 +56,10 @@ run() {
   if grep -q '"unstable_at_start": true' "$json"; then
     echo "$label: already unstable at $from m/s: lower FROM" >&2; exit 1
   fi
-  if grep -q '^  "critical_speed_m_s": [0-9]' "$json"; then
-    v=$(sed -n 's/^  "critical_speed_m_s": \(.*\),$/\1/p' "$json")
-    f=$(sed -n 's/^  "frequency_hz": \(.*\),$/\1/p' "$json")
-    mode=$(sed -n 's/^  "mode": "\(.*\)",$/\1/p' "$json")
+  if grep -q '^  "critical_speed_m_per_s": [0-9]' "$json"; then
+    v=$(sed -n 's/^  "critical_speed_m_per_s": \(.*\),$/\1/p' "$json")
+    f=$(sed -n 's/^  "hunting_frequency_Hz": \(.*\),$/\1/p' "$json")
+    mode=$(sed -n 's/^  "hunting_mode": "\(.*\)",$/\1/p' "$json")
   else
     v=""; f=""; mode=""; stable_to=$to
   fi

@@ -62,7 +62,7 @@ void run_contact_geometry(const ContactGeometryArgs& a) {
   const std::string scene_name = std::filesystem::path(a.scene).stem().string();
   // All files or none (io/output_set.hpp), names made safe (io/file_names.hpp).
   OutputSet outputs(a.out_dir);
-  write_contact_geometry_report(pair, summary, scene_name, spec.name, outputs,
+  write_contact_geometry_report(pair, summary, scene_name, a.scene, spec.name, outputs,
                                 file_stem(scene_name + "_" + spec.name), a.plots);
   std::ostringstream shown;
   shown << std::setprecision(4) << scene_name << " / " << spec.name << ": "

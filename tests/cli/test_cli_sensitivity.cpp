@@ -22,7 +22,9 @@ TEST(CliSensitivity, RankedFilesAndRefusals) {
   std::string header, first;
   std::getline(csv, header);
   std::getline(csv, first);
-  EXPECT_EQ(header, "rank,parameter,value,dVc_dp_m_per_s_per_unit,elasticity,dRe_lambda_dp,dIm_lambda_dp");
+  EXPECT_EQ(header,
+            "rank,parameter,value,critical_speed_derivative_m_per_s_per_unit,elasticity,"
+            "eigenvalue_real_derivative_per_s_per_unit,eigenvalue_imag_derivative_per_s_per_unit");
   EXPECT_EQ(first.rfind("1,contacts.textbook_linear.conicity,0.1,", 0), 0u) << first;
   for (const char* f : {"textbook_bogie_sensitivity.json", "textbook_bogie_sensitivity.md",
                         "textbook_bogie_sensitivity_tornado.png", "textbook_bogie_sensitivity_tornado.svg"})

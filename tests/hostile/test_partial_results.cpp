@@ -57,7 +57,7 @@ TEST(PartialResults, SweepThatLosesItsSteadyStateWritesWhatItFoundMarkedPartial)
             std::string::npos);
   // What was found is there: the grid below 100 m/s and the critical speed
   // in the arc (39.6 m/s, bracketed by 30 and 40 m/s).
-  EXPECT_NE(json.find("\"critical_speed_m_s\": 39.6"), std::string::npos) << json.substr(0, 900);
+  EXPECT_NE(json.find("\"critical_speed_m_per_s\": 39.6"), std::string::npos) << json.substr(0, 900);
   const std::string md = read_text(dir / "out/thesis_bogie_curve_arc2000m_critical_speed.md");
   EXPECT_NE(md.find("**Partial result**"), std::string::npos) << md.substr(0, 600);
   EXPECT_NE(md.find("| 90 |"), std::string::npos);

@@ -107,10 +107,10 @@ TEST(HostileJson, NonFiniteNumberIsRefusedNamingTheKey) {
     JsonWriter j(out);
     j.begin_object();
     try {
-      j.field("critical_speed_m_s", bad);
+      j.field("critical_speed_m_per_s", bad);
       FAIL() << "non-finite value written: " << out.str();
     } catch (const std::runtime_error& e) {
-      EXPECT_NE(std::string(e.what()).find("critical_speed_m_s"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("critical_speed_m_per_s"), std::string::npos) << e.what();
     }
     EXPECT_EQ(out.str().find("nan"), std::string::npos);
     EXPECT_EQ(out.str().find("inf"), std::string::npos);

@@ -99,12 +99,12 @@ TEST(RunConditions, CurveReportJsonAndMarkdownAgree) {
   EXPECT_NE(json.find(std::string("\"railstab_version\": \"") + "0."), std::string::npos);
   // Cant deficiency at 30 m/s: 900 * 1.5 / 9810 - 0.05 = 0.0876147 m.
   EXPECT_TRUE(std::regex_search(
-      json, std::regex("\"speed_m_s\": 30,\\s*\"cant_deficiency_m\": 0\\.087614678")))
+      json, std::regex("\"speed_m_per_s\": 30,\\s*\"cant_deficiency_m\": 0\\.087614678")))
       << json.substr(0, 2000);
   EXPECT_NE(md.find("| 30 | 87.61 |"), std::string::npos);
   // The same critical speed in both (JSON full precision, Markdown 4 digits).
   std::smatch m;
-  ASSERT_TRUE(std::regex_search(json, m, std::regex("\"critical_speed_m_s\": ([0-9.]+)")));
+  ASSERT_TRUE(std::regex_search(json, m, std::regex("\"critical_speed_m_per_s\": ([0-9.]+)")));
   const double vc = std::stod(m[1]);
   std::ostringstream shown;
   shown.precision(4);

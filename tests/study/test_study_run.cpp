@@ -125,3 +125,54 @@ TEST(StudyRun, ShardRecordsMergeIntoTheWholeStudy) {
   other.points.pop_back();
   EXPECT_NE(merge_error({records[0], other}).find("missing"), std::string::npos);
 }
+
+// A record written before the output keys were renamed (format 1: `scene`
+// the path, `scene_name`, points' `frequency_Hz` and `mode`) is refused,
+// naming the file, the old key and its new name; one of the current format
+// round-trips its names.
+TEST(StudyRun, RecordWithTheOldKeyNamesIsRefusedNamingTheKeyAndItsNewName) {
+  const StudyDefinition d = textbook_study({parse_varied_key("contacts.textbook_linear.conicity=0.1:0.2:0.1")});
+  std::stringstream text;
+  write_study_record(text, d, {1, 1}, run_study(d, {}));
+  const std::string now = text.str();
+  for (const char* key : {"scene = ", "scene_file = ", "hunting_frequency_Hz = ", "hunting_mode = "})
+    EXPECT_NE(now.find(key), std::string::npos) << key << "\n" << now;
+  EXPECT_NE(now.find("format = 'railstab study record 2'"), std::string::npos) << now;
+  const std::string current = ::testing::TempDir() + "railstab_record_current.toml";
+  { std::ofstream(current) << now; }
+  const StudyRecord r = read_study_record(current);
+  EXPECT_EQ(r.definition.scene_name, d.scene_name);
+  EXPECT_EQ(r.definition.scene_path, d.scene_path);
+
+  auto refusal = [](const std::string& path, const std::string& record) {
+    { std::ofstream(path) << record; }
+    try {
+      read_study_record(path);
+    } catch (const std::runtime_error& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  auto replaced = [](std::string s, const std::string& from, const std::string& to) {
+    for (std::size_t at = s.find(from); at != std::string::npos; at = s.find(from, at + to.size()))
+      s.replace(at, from.size(), to);
+    return s;
+  };
+  // The whole old record: its study table is refused first.
+  std::string old = replaced(now, "railstab study record 2", "railstab study record 1");
+  old = replaced(old, "\nscene = ", "\nscene_name = ");
+  old = replaced(old, "\nscene_file = ", "\nscene = ");
+  old = replaced(old, "hunting_frequency_Hz = ", "frequency_Hz = ");
+  old = replaced(old, "hunting_mode = ", "mode = ");
+  const std::string old_path = ::testing::TempDir() + "railstab_record_old.toml";
+  const std::string message = refusal(old_path, old);
+  EXPECT_EQ(message.rfind(old_path + ": study.scene_name: renamed to study.scene;", 0), 0u) << message;
+  EXPECT_NE(message.find("study.scene_file"), std::string::npos) << message;
+  // An old name among the points alone is refused by its own name.
+  for (const auto& [from, to] : std::vector<std::pair<std::string, std::string>>{
+           {"hunting_frequency_Hz", "frequency_Hz"}, {"hunting_mode", "mode"}}) {
+    const std::string path = ::testing::TempDir() + "railstab_record_" + to + ".toml";
+    const std::string said = refusal(path, replaced(now, from + " = ", to + " = "));
+    EXPECT_EQ(said.rfind(path + ": points." + to + ": renamed to points." + from + ";", 0), 0u) << said;
+  }
+}

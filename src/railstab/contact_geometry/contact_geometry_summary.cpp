@@ -23,7 +23,8 @@ ContactGeometrySummary summarise_contact_geometry(const ProfilePair& pair,
     s.conicity.push_back(equivalent_conicity(dr, o.amplitude_min_m + i * o.amplitude_step_m,
                                              s.half_contact_distance_m, r0));
   s.equivalent_conicity_at_3mm =
-      equivalent_conicity(dr, 0.003, s.half_contact_distance_m, r0).equivalent_conicity;
+      equivalent_conicity(dr, kConicityReferenceAmplitude_m, s.half_contact_distance_m, r0)
+          .equivalent_conicity;
   s.flange = find_flange_contact(pair, o.conicity_delta_r_range_m);
   return s;
 }

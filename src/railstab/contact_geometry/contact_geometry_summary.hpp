@@ -18,10 +18,14 @@ struct ContactGeometrySummaryOptions {
   double amplitude_min_m = 0.0005, amplitude_max_m = 0.010, amplitude_step_m = 0.0005;
 };
 
+// The amplitude of the single equivalent conicity figure EN 15302 asks for
+// (the JSON's reference_amplitude_m).
+inline constexpr double kConicityReferenceAmplitude_m = 0.003;
+
 struct ContactGeometrySummary {
   std::vector<CharacteristicRow> rows;
   std::vector<ConicityPoint> conicity;
-  double equivalent_conicity_at_3mm = 0;
+  double equivalent_conicity_at_3mm = 0;  // at kConicityReferenceAmplitude_m
   FlangeContact flange;
   double half_contact_distance_m = 0;  // e0 of the Klingel formula
 };

@@ -42,8 +42,9 @@ void write_contact(Csv& c, const ContactPoint* p) {
 }  // namespace
 
 void write_contact_geometry_report(const ProfilePair& pair, const ContactGeometrySummary& s,
-                                   const std::string& scene_name, const std::string& contact_name,
-                                   OutputSet& outputs, const std::string& stem, bool plots) {
+                                   const std::string& scene_name, const std::string& scene_file,
+                                   const std::string& contact_name, OutputSet& outputs,
+                                   const std::string& stem, bool plots) {
   struct {
     std::string characteristic_csv, conicity_csv, json;
   } files;
@@ -95,7 +96,7 @@ void write_contact_geometry_report(const ProfilePair& pair, const ContactGeometr
     JsonWriter j(out);
     const ProfilePairParameters& p = pair.parameters;
     j.begin_object()
-        .field("scene", scene_name)
+        .field("scene_file", scene_file)
         .field("contact", contact_name)
         .field("wheel_profile", pair.wheel.source)
         .field("rail_profile", pair.rail.source)
@@ -109,7 +110,8 @@ void write_contact_geometry_report(const ProfilePair& pair, const ContactGeometr
         .field("method", "EN 15302: integration of the Klingel motion y'' = -delta_r(y)/(2 e0 r0) "
                          "over the rigid-contact delta_r function (yaw neglected); "
                          "tan(gamma_e) = r0 e0 (2 pi / lambda)^2")
-        .field("equivalent_conicity_at_3mm", s.equivalent_conicity_at_3mm)
+        .field("reference_amplitude_m", kConicityReferenceAmplitude_m)
+        .field("equivalent_conicity_at_reference_amplitude", s.equivalent_conicity_at_3mm)
         .field("flange_contact_found", s.flange.found);
     if (s.flange.found) j.field("flange_contact_shift_m", s.flange.lateral_shift_m);
     j.key("equivalent_conicity").begin_array();

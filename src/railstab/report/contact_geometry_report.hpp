@@ -15,11 +15,13 @@ class OutputSet;
 // plots, <stem>_{profiles,delta_r,conicity}.png with their data and script
 // (gnuplot without a shell, in the staging folder; every plot checked).
 // A non-finite number is an error. `scene_name`, `contact_name` name the
-// scene and contact in titles and JSON (any text: quoted for gnuplot).
+// scene and contact in titles (any text: quoted for gnuplot); the JSON holds
+// `scene_file` (the path as given) and `contact` (the contact's name).
 // With plots = false gnuplot is not run and an earlier run's plots of the
 // same names are removed at commit.
 void write_contact_geometry_report(const ProfilePair& pair, const ContactGeometrySummary& summary,
-                                   const std::string& scene_name, const std::string& contact_name,
-                                   OutputSet& outputs, const std::string& stem, bool plots = true);
+                                   const std::string& scene_name, const std::string& scene_file,
+                                   const std::string& contact_name, OutputSet& outputs,
+                                   const std::string& stem, bool plots = true);
 
 }  // namespace railstab

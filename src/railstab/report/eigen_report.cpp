@@ -19,7 +19,7 @@ void write_eigen_json(const Model& model, const StabilityPoint& p,
   outputs.write(stem + "_eigen_" + speed_file_tag(p.speed_m_per_s) + ".json",
                 [&](std::ostream& out) {
     JsonWriter j(out);
-    j.begin_object().field("scene", model.name).field("speed_m_s", p.speed_m_per_s);
+    j.begin_object().field("scene", model.name).field("speed_m_per_s", p.speed_m_per_s);
     write_conditions_json(j, run_conditions(model), {p.speed_m_per_s});
     j.field("eigen_solver", eigen_solver_name(p.solver_used)).field("states", int(p.linear.states()));
     j.key("removed_cyclic_states").begin_array();
@@ -28,9 +28,9 @@ void write_eigen_json(const Model& model, const StabilityPoint& p,
     for (size_t i = 0; i < p.modes.size(); ++i) {
       const ModeReport& m = p.modes[i];
       j.begin_object()
-          .field("real_per_s", m.eigenvalue.real())
-          .field("imag_per_s", m.eigenvalue.imag())
-          .field("frequency_hz", m.frequency_hz)
+          .field("eigenvalue_real_per_s", m.eigenvalue.real())
+          .field("eigenvalue_imag_per_s", m.eigenvalue.imag())
+          .field("frequency_Hz", m.frequency_hz)
           .field("damping_ratio", m.damping_ratio)
           .field("neutral", m.neutral)
           .field("residual", m.residual)

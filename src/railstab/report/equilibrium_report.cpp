@@ -13,6 +13,13 @@
 
 namespace railstab {
 
+namespace {
+// A body's offset from its nominal position per coordinate (kCoordinateNames
+// order), the unit at the end: "x_offset_m", not "x_m_offset".
+const char* const kOffsetKeys[6] = {"x_offset_m",    "y_offset_m",     "z_offset_m",
+                                    "roll_offset_rad", "pitch_offset_rad", "yaw_offset_rad"};
+}  // namespace
+
 void check_finite_equilibrium(const Model& model, double speed_m_per_s,
                               const Eigen::MatrixXd& q6, const Eigen::MatrixXd& qd6) {
   for (Eigen::Index b = 0; b < q6.cols(); ++b)
@@ -49,7 +56,7 @@ std::string write_equilibrium_results(const PreparedScene& s, OutputSet& outputs
   shown << ", max acceleration residual " << s.equilibrium.max_acceleration << "\n";
   outputs.write(stem + "_equilibrium.json", [&](std::ostream& out) {
     JsonWriter j(out);
-    j.begin_object().field("scene", model.name).field("speed_m_s", s.speed_m_per_s);
+    j.begin_object().field("scene", model.name).field("speed_m_per_s", s.speed_m_per_s);
     write_conditions_json(j, run_conditions(model), {s.speed_m_per_s});
     j.field("newton_iterations", s.equilibrium.iterations)
         .field("pseudo_transient_steps", s.equilibrium.pseudo_transient_steps)
@@ -60,10 +67,10 @@ std::string write_equilibrium_results(const PreparedScene& s, OutputSet& outputs
       for (int c = 0; c < 6; ++c) {
         const double offset = q6(c, b) - model.bodies[b].nominal_q(c);
         if (c == int(CoordinateIndex::pitch) && model.bodies[b].wheelset()) {
-          j.field("spin_rate_rad_s", qd6(c, b));
+          j.field("spin_rate_rad_per_s", qd6(c, b));
           continue;
         }
-        j.field(kCoordinateNames[c] + "_offset", offset);
+        j.field(kOffsetKeys[c], offset);
       }
       shown << "  " << std::left << std::setw(10) << model.bodies[b].name << std::right
             << " lateral " << std::setw(12) << q6(1, b) * 1e3 << " mm  yaw " << std::setw(12)
@@ -87,9 +94,9 @@ std::string write_equilibrium_results(const PreparedScene& s, OutputSet& outputs
             .field("creep_force_longitudinal_N", w.creep_force_x_N)
             .field("creep_force_lateral_N", w.creep_force_y_N)
             .field("spin_creep_moment_N_m", w.spin_moment_N_m)
-            .field("total_force_on_wheelset_I_N_x", w.force_I.x())
-            .field("total_force_on_wheelset_I_N_y", w.force_I.y())
-            .field("total_force_on_wheelset_I_N_z", w.force_I.z())
+            .field("total_force_on_wheelset_x_N", w.force_I.x())
+            .field("total_force_on_wheelset_y_N", w.force_I.y())
+            .field("total_force_on_wheelset_z_N", w.force_I.z())
             .end_object();
         shown << "      " << (w.side > 0 ? "left " : "right") << " wheel load "
               << w.normal_force_N << " N, creepages (" << w.creep_x << ", " << w.creep_y
@@ -103,10 +110,10 @@ std::string write_equilibrium_results(const PreparedScene& s, OutputSet& outputs
         if (w.body != int(b)) continue;
         j.begin_object()
             .field("side", w.side > 0 ? "left" : "right")
-            .field("Y_N", w.Y_N)
-            .field("Q_N", w.Q_N);
-        if (w.y_over_q) j.field("Y_over_Q", *w.y_over_q);
-        else j.key("Y_over_Q").null();
+            .field("lateral_force_N", w.Y_N)
+            .field("wheel_load_N", w.Q_N);
+        if (w.y_over_q) j.field("y_over_q", *w.y_over_q);
+        else j.key("y_over_q").null();
         if (w.nadal_limit) j.field("nadal_limit", *w.nadal_limit);
         else j.key("nadal_limit").null();
         j.end_object();

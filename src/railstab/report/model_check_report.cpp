@@ -77,7 +77,7 @@ void write_model_check_markdown(std::ostream& out, const ModelCheckReport& r) {
 
 void write_model_check_json(std::ostream& out, const ModelCheckReport& r) {
   JsonWriter j(out);
-  j.begin_object().field("scene", r.scene).field("speed_m_s", r.speed_m_per_s);
+  j.begin_object().field("scene", r.scene).field("speed_m_per_s", r.speed_m_per_s);
   j.key("errors").begin_array();
   for (const std::string& e : r.errors) j.value(e);
   j.end_array().key("warnings").begin_array();
@@ -111,13 +111,13 @@ void write_model_check_json(std::ostream& out, const ModelCheckReport& r) {
         .field("deflection", d.deflection)
         .field("unit", d.unit)
         .end_object();
-  j.end_array().field("natural_frequency_speed_m_s", r.natural_frequency_speed_m_per_s);
+  j.end_array().field("natural_frequency_speed_m_per_s", r.natural_frequency_speed_m_per_s);
   j.key("natural_frequencies").begin_array();
   for (const NaturalFrequency& f : r.natural_frequencies)
     j.begin_object()
-        .field("frequency_hz", f.frequency_hz)
+        .field("frequency_Hz", f.frequency_hz)
         .field("damping_ratio", f.damping_ratio)
-        .field("mode", f.name)
+        .field("name", f.name)
         .end_object();
   j.end_array().field("natural_frequency_note", r.natural_frequency_note).end_object();
 }

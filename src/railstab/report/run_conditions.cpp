@@ -149,9 +149,9 @@ void write_conditions_json(JsonWriter& j, const RunConditions& c,
   for (const std::string& s : c.contacts) j.value(s);
   j.end_array();
   if (!speeds.empty()) {
-    j.key("cant_deficiency_m_by_speed").begin_array();
+    j.key("cant_deficiency_by_speed").begin_array();
     for (double v : speeds)
-      j.begin_object().field("speed_m_s", v).field("cant_deficiency_m", c.cant_deficiency_m(v)).end_object();
+      j.begin_object().field("speed_m_per_s", v).field("cant_deficiency_m", c.cant_deficiency_m(v)).end_object();
     j.end_array();
   }
   j.end_object();

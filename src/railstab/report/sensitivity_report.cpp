@@ -13,7 +13,8 @@ namespace railstab {
 namespace {
 
 void write_csv(std::ostream& out, const CriticalSpeedSensitivities& s) {
-  out << "rank,parameter,value,dVc_dp_m_per_s_per_unit,elasticity,dRe_lambda_dp,dIm_lambda_dp\n";
+  out << "rank,parameter,value,critical_speed_derivative_m_per_s_per_unit,elasticity,"
+         "eigenvalue_real_derivative_per_s_per_unit,eigenvalue_imag_derivative_per_s_per_unit\n";
   for (size_t i = 0; i < s.parameters.size(); ++i) {
     const ParameterSensitivity& p = s.parameters[i];
     out << i + 1 << "," << csv_field(p.key) << "," << csv_number(p.value, p.key, 12) << ","
@@ -27,14 +28,14 @@ void write_csv(std::ostream& out, const CriticalSpeedSensitivities& s) {
 void write_json(std::ostream& out, const CriticalSpeedSensitivities& s, const SensitivityReportContext& c) {
   JsonWriter j(out);
   j.begin_object()
-      .field("scene", c.scene_path)
-      .field("scene_name", c.scene_name)
+      .field("scene_file", c.scene_path)
+      .field("scene", c.scene_name)
       .field("critical_speed_m_per_s", s.critical_speed_m_per_s)
       .field("hunting_frequency_Hz", c.hunting_frequency_hz)
       .field("hunting_mode", c.mode)
       .field("eigenvalue_real_per_s", s.eigenvalue.real())
-      .field("eigenvalue_imag_rad_per_s", s.eigenvalue.imag())
-      .field("dRe_lambda_dV_per_m", s.real_part_speed_derivative)
+      .field("eigenvalue_imag_per_s", s.eigenvalue.imag())
+      .field("eigenvalue_real_speed_derivative_per_m", s.real_part_speed_derivative)
       .field("method", "dVc/dp = -(dRe lambda/dp)/(dRe lambda/dV) at the critical speed; dlambda/dp "
                        "exact (left/right eigenvectors, AD dA/dp), dRe lambda/dV central difference");
   j.key("parameters").begin_array();
@@ -44,10 +45,10 @@ void write_json(std::ostream& out, const CriticalSpeedSensitivities& s, const Se
         .field("rank", int(i + 1))
         .field("parameter", p.key)
         .field("value", p.value)
-        .field("dVc_dp", p.critical_speed_derivative)
+        .field("critical_speed_derivative_m_per_s_per_unit", p.critical_speed_derivative)
         .field("elasticity", p.elasticity)
-        .field("dRe_lambda_dp", p.eigenvalue_derivative.real())
-        .field("dIm_lambda_dp", p.eigenvalue_derivative.imag())
+        .field("eigenvalue_real_derivative_per_s_per_unit", p.eigenvalue_derivative.real())
+        .field("eigenvalue_imag_derivative_per_s_per_unit", p.eigenvalue_derivative.imag())
         .end_object();
   }
   j.end_array().end_object();

@@ -14,14 +14,14 @@ std::string simulation_run_json(const Model& model, double speed_m_per_s,
   const double simulated = traj.times_s.back() - opt.t_start_s;
   j.begin_object()
       .field("scene", model.name)
-      .field("speed_m_s", speed_m_per_s)
+      .field("speed_m_per_s", speed_m_per_s)
       .field("states", model.state_size())
       .field("integrator", IntegratorVariant{opt.kind, opt.order}.label())
       .field("relative_tolerance", opt.relative_tolerance)
       .field("absolute_tolerance", opt.absolute_tolerance)
       .field("simulated_s", simulated)
-      .field("wall_seconds", traj.stats.wall_seconds)
-      .field("cpu_seconds", traj.stats.cpu_seconds);
+      .field("wall_s", traj.stats.wall_seconds)
+      .field("cpu_s", traj.stats.cpu_seconds);
   j.key("real_time_factor");
   if (simulated > 0.0 && traj.stats.wall_seconds > 0.0)
     j.value(simulated / traj.stats.wall_seconds);
@@ -51,7 +51,7 @@ std::string simulation_run_json(const Model& model, double speed_m_per_s,
           .field("compared_outputs", error->compared_outputs)
           .field("reference_end_s", error->reference_end_s)
           .field("reference_stopped_early", error->reference_stopped_early)
-          .field("reference_wall_seconds", error->wall_seconds);
+          .field("reference_wall_s", error->wall_seconds);
     }
     j.end_object();
   }

@@ -23,8 +23,8 @@ namespace {
 
 void write_eigenvalue_csv(std::ostream& out, const CriticalSpeedResult& r,
                           const std::vector<std::vector<int>>& ids) {
-  out << "speed_m_s,mode_track,real_per_s,imag_per_s,frequency_hz,damping_ratio,neutral,"
-         "residual,mode\n"
+  out << "speed_m_per_s,mode_track,eigenvalue_real_per_s,eigenvalue_imag_per_s,frequency_Hz,"
+         "damping_ratio,neutral,residual,name\n"
       << std::setprecision(12);
   for (size_t i = 0; i < r.grid.size(); ++i)
     for (size_t j = 0; j < r.grid[i].modes.size(); ++j) {
@@ -39,11 +39,11 @@ void write_eigenvalue_csv(std::ostream& out, const CriticalSpeedResult& r,
         });
         out << ',';
       };
-      put(speed, "speed_m_s");
+      put(speed, "speed_m_per_s");
       out << ids[i][j] << ',';
-      put(m.eigenvalue.real(), "real_per_s");
-      put(m.eigenvalue.imag(), "imag_per_s");
-      put(m.frequency_hz, "frequency_hz");
+      put(m.eigenvalue.real(), "eigenvalue_real_per_s");
+      put(m.eigenvalue.imag(), "eigenvalue_imag_per_s");
+      put(m.frequency_hz, "frequency_Hz");
       put(m.damping_ratio, "damping_ratio");
       out << (m.neutral ? 1 : 0) << ',';
       put(m.residual, "residual");
@@ -128,8 +128,9 @@ std::vector<PlottedTrack> write_track_blocks(std::ostream& out, const CriticalSp
   int colour = 0;
   for (PlottedTrack& t : plotted)
     if (t.labelled) t.colour = colour++;
-  out << std::setprecision(10) << "# speed_m_s real_per_s frequency_hz damping_ratio, one block "
-                                  "per tracked mode\n";
+  out << std::setprecision(10)
+      << "# speed_m_per_s eigenvalue_real_per_s frequency_Hz damping_ratio, one block per "
+         "tracked mode\n";
   for (const PlottedTrack& t : plotted) {
     const int id = t.id;
     out << "# track " << id << ": " << gnuplot_text(t.name) << "\n";
@@ -278,7 +279,7 @@ std::vector<std::string> plot_stability(OutputSet& outputs, const std::string& s
 void write_mode_json(JsonWriter& j, const ModeReport& m) {
   j.field("eigenvalue_real_per_s", m.eigenvalue.real())
       .field("eigenvalue_imag_per_s", m.eigenvalue.imag())
-      .field("frequency_hz", m.frequency_hz)
+      .field("frequency_Hz", m.frequency_hz)
       .field("damping_ratio", m.damping_ratio)
       .field("residual", m.residual)
       .field("name", m.name);
@@ -296,7 +297,7 @@ void write_json(std::ostream& out, const Model& model, const CriticalSpeedResult
                 const RunConditions& conditions, const std::string& solver, double max_hz) {
   {
     JsonWriter j(out);
-    j.begin_object().field("scene", model.name).field("source", model.source_path);
+    j.begin_object().field("scene", model.name).field("scene_file", model.source_path);
     // Where and how (report/run_conditions.hpp): track, cant deficiency at
     // every speed of the grid, contacts, scene hash, version; the solver and
     // the tolerances of the search.
@@ -304,10 +305,10 @@ void write_json(std::ostream& out, const Model& model, const CriticalSpeedResult
     for (const StabilityPoint& p : r.grid) speeds.push_back(p.speed_m_per_s);
     write_conditions_json(j, conditions, speeds);
     j.field("eigen_solver", solver)
-        .field("hunting_band_hz", max_hz)
-        .field("speed_tolerance_requested_m_s", r.requested_tolerance_m_per_s)
-        .field("equilibrium_acceleration_tolerance_m_s2", EquilibriumOptions{}.acceleration_tolerance);
-    j.key("speed_range_m_s").begin_array().value(r.from_m_per_s).value(r.to_m_per_s).end_array();
+        .field("hunting_band_Hz", max_hz)
+        .field("speed_tolerance_requested_m_per_s", r.requested_tolerance_m_per_s)
+        .field("equilibrium_acceleration_tolerance_m_per_s2", EquilibriumOptions{}.acceleration_tolerance);
+    j.field("from_m_per_s", r.from_m_per_s).field("to_m_per_s", r.to_m_per_s);
     j.field("partial", r.partial);
     if (r.partial)
       j.field("partial_reason", r.partial_reason);
@@ -316,20 +317,20 @@ void write_json(std::ostream& out, const Model& model, const CriticalSpeedResult
     j.field("stable_in_range", r.stable_in_range).field("unstable_at_start", r.unstable_at_start);
     j.field("verdict", verdict_key(stability_verdict(r))).field("verdict_text", verdict_sentence(r));
     if (r.equilibrium_lost_at_m_per_s > 0.0)
-      j.field("equilibrium_lost_at_m_s", r.equilibrium_lost_at_m_per_s)
+      j.field("equilibrium_lost_at_m_per_s", r.equilibrium_lost_at_m_per_s)
           .field("equilibrium_error", r.equilibrium_error);
     if (r.critical_speed_found) {
       const ModeReport& m = r.at_critical.modes[r.at_critical.least_stable];
-      j.field("critical_speed_m_s", r.critical_speed_m_per_s)
-          .field("critical_speed_tolerance_m_s", r.speed_tolerance_m_per_s)
-          .field("frequency_hz", m.frequency_hz)
-          .field("damping_ratio", m.damping_ratio)
-          .field("mode", m.name);
+      j.field("critical_speed_m_per_s", r.critical_speed_m_per_s)
+          .field("critical_speed_tolerance_m_per_s", r.speed_tolerance_m_per_s)
+          .field("hunting_frequency_Hz", m.frequency_hz)
+          .field("hunting_damping_ratio", m.damping_ratio)
+          .field("hunting_mode", m.name);
       j.key("loss_of_stability").begin_object();
       j.field("kind", loss_of_stability_key(r.loss.kind))
           .field("description", describe_loss_of_stability(r.loss))
-          .field("stable_side_m_s", r.loss.stable_speed_m_per_s)
-          .field("unstable_side_m_s", r.loss.unstable_speed_m_per_s)
+          .field("stable_side_m_per_s", r.loss.stable_speed_m_per_s)
+          .field("unstable_side_m_per_s", r.loss.unstable_speed_m_per_s)
           .field("max_real_part_stable_side_per_s", r.loss.stable_max_real_part_per_s)
           .field("max_real_part_unstable_side_per_s", r.loss.unstable_max_real_part_per_s)
           .field("steady_state_largest_translation_change_m", r.loss.largest_translation_change_m);
@@ -347,7 +348,7 @@ void write_json(std::ostream& out, const Model& model, const CriticalSpeedResult
       // Every oscillatory mode up to the plotted band at the critical speed
       // (r.at_critical), with its shape: what a client compares the hunting
       // mode with.
-      j.field("modes_at_critical_speed_m_s", r.at_critical.speed_m_per_s);
+      j.field("modes_at_critical_speed_m_per_s", r.at_critical.speed_m_per_s);
       j.key("modes_at_critical_speed").begin_array();
       for (size_t i = 0; i < r.at_critical.modes.size(); ++i) {
         const ModeReport& mi = r.at_critical.modes[i];
@@ -360,11 +361,11 @@ void write_json(std::ostream& out, const Model& model, const CriticalSpeedResult
       }
       j.end_array();
     } else {
-      j.key("critical_speed_m_s").null().key("frequency_hz").null().key("mode").null();
+      j.key("critical_speed_m_per_s").null().key("hunting_frequency_Hz").null().key("hunting_mode").null();
     }
     j.field("states", int(r.grid.empty() ? 0 : r.grid.front().linear.states()))
         .field("evaluations", r.evaluations)
-        .field("wall_seconds", r.seconds);
+        .field("wall_s", r.seconds);
     j.key("removed_cyclic_states").begin_array();
     if (!r.grid.empty())
       for (const std::string& s : r.grid.front().linear.removed_states) j.value(s);
@@ -376,7 +377,7 @@ void write_json(std::ostream& out, const Model& model, const CriticalSpeedResult
     j.key("unstable_modes_above_hunting_band").begin_array();
     for (const StabilityPoint& p : r.grid)
       for (int i : p.unstable_above_band) {
-        j.begin_object().field("speed_m_s", p.speed_m_per_s);
+        j.begin_object().field("speed_m_per_s", p.speed_m_per_s);
         write_mode_json(j, p.modes[i]);
         j.end_object();
       }
@@ -389,10 +390,10 @@ void write_json(std::ostream& out, const Model& model, const CriticalSpeedResult
           .field("found", r.damping_limit_found);
       const StabilityPoint& p = r.at_damping_limit;
       if (r.damping_limit_found)
-        j.field("speed_m_s", r.damping_limit_speed_m_per_s)
-            .field("speed_tolerance_m_s", r.speed_tolerance_m_per_s);
+        j.field("speed_m_per_s", r.damping_limit_speed_m_per_s)
+            .field("speed_tolerance_m_per_s", r.speed_tolerance_m_per_s);
       else
-        j.key("speed_m_s").null();
+        j.key("speed_m_per_s").null();
       if ((r.damping_limit_found || r.damping_below_at_start) && p.least_damped >= 0) {
         j.key("mode").begin_object();
         write_mode_json(j, p.modes[size_t(p.least_damped)]);
@@ -407,7 +408,7 @@ void write_json(std::ostream& out, const Model& model, const CriticalSpeedResult
     // is the real part (least_stable).
     j.key("least_damped_by_speed").begin_array();
     for (const StabilityPoint& p : r.grid) {
-      j.begin_object().field("speed_m_s", p.speed_m_per_s);
+      j.begin_object().field("speed_m_per_s", p.speed_m_per_s);
       if (p.least_damped >= 0) write_mode_json(j, p.modes[size_t(p.least_damped)]);
       j.end_object();
     }

@@ -40,7 +40,7 @@ void write_json(std::ostream& out, const StudyDefinition& d, const StudyShard& s
   JsonWriter j(out);
   j.begin_object();
   j.key("study").begin_object();
-  j.field("scene", d.scene_path).field("scene_name", d.scene_name).field("scene_fnv1a64", d.scene_hash);
+  j.field("scene_file", d.scene_path).field("scene", d.scene_name).field("scene_fnv1a64", d.scene_hash);
   j.key("set").begin_array();
   for (const SceneValueSetting& s : d.fixed)
     j.begin_object().field("key", s.key).field("value", s.value).end_object();

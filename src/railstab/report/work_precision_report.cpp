@@ -39,8 +39,8 @@ std::vector<std::string> work_precision_plot_file_names(const std::string& stem)
 }
 
 void write_work_precision_csv(std::ostream& out, const WorkPrecisionResult& r) {
-  out << "integrator,rtol,atol,error,cpu_seconds,steps,rhs_evaluations,jacobians,status,"
-         "wall_seconds,error_coordinate,lateral_error\n";
+  out << "integrator,relative_tolerance,absolute_tolerance,position_error,cpu_s,steps,"
+         "rhs_evaluations,jacobian_evaluations,status,wall_s,position_error_at,lateral_error\n";
   for (const WorkPrecisionRun& run : r.runs) {
     const bool done = std::isfinite(run.error);
     out << csv_field(run.label) << ',' << required_number(run.rtol, run.label + " rtol") << ','
@@ -63,7 +63,7 @@ void write_work_precision_plot(OutputSet& outputs, const std::string& stem, cons
   const std::vector<std::string> labels = labels_in_order(r);
   std::vector<std::string> plotted;
   outputs.write(dat, [&](std::ostream& out) {
-    out << "# cpu_seconds error rtol (one block per integrator)\n";
+    out << "# cpu_s position_error relative_tolerance (one block per integrator)\n";
     for (const std::string& label : labels) {
       std::ostringstream block;
       for (const WorkPrecisionRun& run : r.runs)

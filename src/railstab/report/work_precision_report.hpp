@@ -13,8 +13,9 @@
 
 namespace railstab {
 
-// integrator,rtol,atol,error,cpu_seconds,steps,... (outcome columns empty
-// for a run without a result; the status column says why).
+// integrator,relative_tolerance,absolute_tolerance,position_error,cpu_s,...
+// (outcome columns empty for a run without a result; the status column says
+// why).
 void write_work_precision_csv(std::ostream& out, const WorkPrecisionResult& r);
 
 void write_work_precision_markdown(std::ostream& out, const Model& model, double speed_m_per_s,

@@ -14,7 +14,47 @@ namespace railstab {
 
 namespace {
 
-constexpr const char* kFormat = "railstab study record 1";
+// Format 2: the output keys renamed to one convention (docs/outputs.md,
+// "Naming convention"); format 1 records are refused, naming the renames.
+constexpr const char* kFormat = "railstab study record 2";
+
+// Keys of a format-1 record and their names now. A record holding one is
+// refused with the file, the key and the new name: an old name is accepted
+// nowhere silently (and `scene` changed meaning: it was the path).
+struct RenamedKey {
+  const char* table;  // "study" or "points"
+  const char* old_key;
+  const char* new_key;
+};
+constexpr RenamedKey kRenamedKeys[] = {
+    {"study", "scene_name", "scene"},
+    {"points", "frequency_Hz", "hunting_frequency_Hz"},
+    {"points", "mode", "hunting_mode"},
+};
+
+// Refuses a record written with the old key names (format 1, before the
+// rename): names the first old key found and its new name, and says what the
+// old `scene` (the path) is now.
+void refuse_old_key_names(const toml::table& root, const std::string& path) {
+  auto refuse = [&](const RenamedKey& k) {
+    throw std::runtime_error(
+        path + ": " + k.table + "." + k.old_key + ": renamed to " + k.table + "." + k.new_key +
+        "; the record was written by an older railstab (format 'railstab study record 1'), "
+        "whose study.scene_name, study.scene (the path), points.frequency_Hz and points.mode "
+        "are now study.scene, study.scene_file, points.hunting_frequency_Hz and "
+        "points.hunting_mode: re-run the study or its shard to write a current record");
+  };
+  const toml::table* study = root.get_as<toml::table>("study");
+  const toml::array* points = root.get_as<toml::array>("points");
+  for (const RenamedKey& k : kRenamedKeys) {
+    if (std::string(k.table) == "study") {
+      if (study && study->contains(k.old_key)) refuse(k);
+    } else if (points) {
+      for (const toml::node& n : *points)
+        if (const toml::table* t = n.as_table(); t && t->contains(k.old_key)) refuse(k);
+    }
+  }
+}
 
 [[noreturn]] void fail(const std::string& path, const std::string& key, const std::string& expected) {
   throw std::runtime_error(path + ": " + key + ": expected " + expected);
@@ -59,8 +99,8 @@ const toml::array& array_at(const toml::table& t, const std::string& key, const 
 void write_study_record(std::ostream& out, const StudyDefinition& d, const StudyShard& shard,
                         const std::vector<StudyPoint>& points) {
   toml::table study{{"format", kFormat},
-                    {"scene", d.scene_path},
-                    {"scene_name", d.scene_name},
+                    {"scene", d.scene_name},
+                    {"scene_file", d.scene_path},
                     {"scene_fnv1a64", d.scene_hash},
                     {"combinations", int64_t(d.combinations())},
                     {"shard", int64_t(shard.index)},
@@ -82,8 +122,8 @@ void write_study_record(std::ostream& out, const StudyDefinition& d, const Study
                                {"status", p.status},
                                {"critical_speed_found", p.critical_speed_found},
                                {"critical_speed_m_per_s", p.critical_speed_m_per_s},
-                               {"frequency_Hz", p.frequency_hz},
-                               {"mode", p.mode},
+                               {"hunting_frequency_Hz", p.frequency_hz},
+                               {"hunting_mode", p.mode},
                                {"message", p.message}});
   }
   study.insert("set", set);
@@ -100,14 +140,15 @@ StudyRecord read_study_record(const std::string& path) {
     throw std::runtime_error(path + ": expected a railstab study record (TOML), got a syntax error: " +
                              std::string(e.description()));
   }
+  refuse_old_key_names(root, path);
   StudyRecord r;
   r.path = path;
   const toml::table& s = table_at(root, "study", path);
   if (text_at(s, "format", path, "study.") != kFormat)
     fail(path, "study.format", std::string("'") + kFormat + "'");
   StudyDefinition& d = r.definition;
-  d.scene_path = text_at(s, "scene", path, "study.");
-  d.scene_name = text_at(s, "scene_name", path, "study.");
+  d.scene_name = text_at(s, "scene", path, "study.");
+  d.scene_path = text_at(s, "scene_file", path, "study.");
   d.scene_hash = text_at(s, "scene_fnv1a64", path, "study.");
   d.analysis.from_m_per_s = number_at(s, "from_m_per_s", path, "study.");
   d.analysis.to_m_per_s = number_at(s, "to_m_per_s", path, "study.");
@@ -165,8 +206,8 @@ StudyRecord read_study_record(const std::string& path) {
       if (!found) fail(path, "points.critical_speed_found", "true or false");
       p.critical_speed_found = found->get();
       p.critical_speed_m_per_s = number_at(*t, "critical_speed_m_per_s", path, "points.");
-      p.frequency_hz = number_at(*t, "frequency_Hz", path, "points.");
-      p.mode = text_at(*t, "mode", path, "points.");
+      p.frequency_hz = number_at(*t, "hunting_frequency_Hz", path, "points.");
+      p.mode = text_at(*t, "hunting_mode", path, "points.");
       p.message = text_at(*t, "message", path, "points.");
       r.points.push_back(std::move(p));
     }

@@ -23,7 +23,9 @@ struct StudyRecord {
 };
 
 // Throws std::runtime_error "<path>: <key>: expected ..., got ..." for a
-// file that is not a study record or is damaged.
+// file that is not a study record or is damaged, and "<path>: <key>: renamed
+// to <new key>; ..." for a record written with the old key names (format
+// "railstab study record 1").
 StudyRecord read_study_record(const std::string& path);
 
 // The points of the whole study from the records of its shards. Throws
