@@ -11,14 +11,18 @@
 #                           runs, 10-20 s each in Release and 100-200 s under
 #                           ASan, and the thesis-vehicle critical-speed
 #                           sensitivity check, 5 s in Release and 140 s under
-#                           ASan (its textbook-bogie twin stays in), and the tests that assert a CPU time or a
+#                           ASan (its textbook-bogie twin stays in), the
+#                           thesis-vehicle periodic orbits and the bogie's
+#                           monodromy against central differences (40-110 s
+#                           each in Release; the normal-form orbit tests
+#                           run the same code and stay in), and the tests that assert a CPU time or a
 #                           CPU budget, which the sanitizers' ~10x slowdown
 #                           breaks, and the packaging tests; the Release
 #                           suite runs them all)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 fuzz_seconds=${RAILSTAB_FUZZ_SECONDS:-30}
-long_runs='SteadyCurvingProfiles\.EquilibriumIsWhere|CriticalSpeedSensitivity\.ThesisVehicle|ContactDamping\.VerifyInTheArc|ThesisBogie\.ShiftsOutwardsInCurve|ExtremeConservative|Extreme/ExtremeRun|Verification\.|ErrorEstimate\.|ExtremeNearCritical|CurveStabilityProfiles\.(SpinMode|VehicleArc|HighSpeed)|CliVerifyAnyMode'
+long_runs='SteadyCurvingProfiles\.EquilibriumIsWhere|CriticalSpeedSensitivity\.ThesisVehicle|ContactDamping\.VerifyInTheArc|ThesisBogie\.ShiftsOutwardsInCurve|ExtremeConservative|Extreme/ExtremeRun|Verification\.|ErrorEstimate\.|ExtremeNearCritical|CurveStabilityProfiles\.(SpinMode|VehicleArc|HighSpeed)|CliVerifyAnyMode|OrbitContinuationThesisVehicle\.|FlowSensitivity\.Monodromy'
 timed='ContactTables\.BuildTakesUnderOneSecond|SundialsFlagNames|WorkLimits'
 # Packaging and build tests (the example programs, install + find_package,
 # the compile-fail test of the element contract): about the
