@@ -11,6 +11,7 @@
 #include <railstab/report/eigen_report.hpp>
 #include <railstab/stability/point_mode_shapes.hpp>
 #include <railstab/report/equilibrium_report.hpp>
+#include <railstab/nonlinear/hopf_assessment.hpp>
 #include <railstab/report/stability_report.hpp>
 #include <railstab/stability/speed_analysis.hpp>
 
@@ -94,11 +95,14 @@ void run_critical_speed(const CommonArgs& a, CriticalSpeedOptions opt) {
   const CriticalSpeedResult r = find_critical_speed(s.model, s.equilibrium.state, s.speed_m_per_s, opt);
   const std::string solver =
       r.grid.empty() ? a.solver : eigen_solver_name(r.grid.front().solver_used);
+  // The Hopf point's criticality (first Lyapunov coefficient, kind), or why
+  // it is not computed (profile contact, no oscillatory crossing).
+  const HopfAssessment hopf = assess_hopf(s.model, r);
   OutputSet outputs(a.out_dir);
   write_stability_results(s.model, r, outputs, stem_for(s.model), solver, a.plots,
-                          opt.stability.max_frequency_hz);
+                          opt.stability.max_frequency_hz, &hopf);
   const std::vector<std::string> written = outputs.commit();
-  print_critical_speed_summary(std::cout, s.model, r, opt.stability.max_frequency_hz);
+  print_critical_speed_summary(std::cout, s.model, r, opt.stability.max_frequency_hz, &hopf);
   list_written(written, std::cout);
 }
 

@@ -293,8 +293,42 @@ void write_mode_json(JsonWriter& j, const ModeReport& m) {
   j.end_array();
 }
 
+// The Hopf point's criticality (docs/outputs.md): the two headline keys,
+// null when not computed, and an object with the reason or the details.
+void write_hopf_json(JsonWriter& j, const HopfAssessment* h) {
+  if (h && h->computed) {
+    j.field("first_lyapunov_coefficient", h->result.first_lyapunov_coefficient)
+        .field("hopf_kind", hopf_kind_name(h->result.kind));
+  } else {
+    j.key("first_lyapunov_coefficient").null().key("hopf_kind").null();
+  }
+  j.key("hopf").begin_object();
+  j.field("computed", h && h->computed);
+  if (!h) {
+    j.field("not_computed_reason", std::string("not requested"));
+  } else if (!h->computed) {
+    j.field("not_computed_reason", h->not_computed_reason);
+  } else {
+    const HopfCriticality& c = h->result;
+    j.key("not_computed_reason").null();
+    j.field("evaluated_at_m_per_s", c.speed_m_per_s)
+        .field("hopf_speed_m_per_s", c.critical_speed_m_per_s)
+        .field("eigenvalue_real_speed_derivative_per_m", c.real_part_speed_derivative)
+        .field("cycle_side", std::string(c.cycle_side > 0 ? "above" : c.cycle_side < 0 ? "below" : "none"))
+        .field("description", describe_hopf(*h));
+    if (h->amplitude_state.empty())
+      j.key("amplitude_state").null().key("cycle_amplitude_coefficient_m_per_sqrt_m_per_s").null();
+    else
+      j.field("amplitude_state", h->amplitude_state)
+          .field("cycle_amplitude_coefficient_m_per_sqrt_m_per_s",
+                 h->amplitude_coefficient_m_per_sqrt_m_per_s);
+  }
+  j.end_object();
+}
+
 void write_json(std::ostream& out, const Model& model, const CriticalSpeedResult& r,
-                const RunConditions& conditions, const std::string& solver, double max_hz) {
+                const RunConditions& conditions, const std::string& solver, double max_hz,
+                const HopfAssessment* hopf) {
   {
     JsonWriter j(out);
     j.begin_object().field("scene", model.name).field("scene_file", model.source_path);
@@ -335,6 +369,7 @@ void write_json(std::ostream& out, const Model& model, const CriticalSpeedResult
           .field("max_real_part_unstable_side_per_s", r.loss.unstable_max_real_part_per_s)
           .field("steady_state_largest_translation_change_m", r.loss.largest_translation_change_m);
       j.end_object();
+      write_hopf_json(j, hopf);
       const std::vector<ModeShape>& shapes = r.shapes_at_critical;
       if (shapes.size() != r.at_critical.modes.size())
         throw std::invalid_argument(
@@ -362,6 +397,7 @@ void write_json(std::ostream& out, const Model& model, const CriticalSpeedResult
       j.end_array();
     } else {
       j.key("critical_speed_m_per_s").null().key("hunting_frequency_Hz").null().key("hunting_mode").null();
+      write_hopf_json(j, hopf);
     }
     j.field("states", int(r.grid.empty() ? 0 : r.grid.front().linear.states()))
         .field("evaluations", r.evaluations)
@@ -418,7 +454,7 @@ void write_json(std::ostream& out, const Model& model, const CriticalSpeedResult
 
 void write_markdown(std::ostream& md_out, const Model& model, const CriticalSpeedResult& r,
                     const RunConditions& conditions, const std::string& solver,
-                    const StabilityFiles& files) {
+                    const StabilityFiles& files, const HopfAssessment* hopf) {
   auto rel = [&](const std::string& f) { return f; };  // names in the same folder
   {
     std::ostream& md = md_out;
@@ -472,7 +508,9 @@ void write_markdown(std::ostream& md_out, const Model& model, const CriticalSpee
          << "| damping ratio at " << r.at_critical.speed_m_per_s << " m/s | " << m.damping_ratio
          << " |\n"
          << "| mode | " << md_text(m.name) << " |\n"
-         << "| loss of stability | " << md_text(describe_loss_of_stability(r.loss)) << " |\n\n";
+         << "| loss of stability | " << md_text(describe_loss_of_stability(r.loss)) << " |\n";
+      if (hopf) md << "| Hopf bifurcation | " << md_text(describe_hopf(*hopf)) << " |\n";
+      md << "\n";
       if (r.shapes_at_critical.size() == r.at_critical.modes.size())
         write_mode_shape_markdown(md, model,
                                   r.shapes_at_critical[size_t(r.at_critical.least_stable)]);
@@ -533,7 +571,7 @@ std::vector<std::string> stability_file_names(const std::string& stem) {
 StabilityFiles write_stability_results(const Model& model, const CriticalSpeedResult& result,
                                        OutputSet& outputs, const std::string& stem,
                                        const std::string& eigen_solver_name, bool plots,
-                                       double max_plot_frequency_hz) {
+                                       double max_plot_frequency_hz, const HopfAssessment* hopf) {
   for (const std::string& name : stability_file_names(stem)) outputs.replaces(name);
   StabilityFiles files;
   const std::vector<std::vector<int>>& ids = result.mode_tracks;
@@ -549,14 +587,14 @@ StabilityFiles write_stability_results(const Model& model, const CriticalSpeedRe
   outputs.write(files.json,
                 [&](std::ostream& out) {
                   write_json(out, model, result, conditions, eigen_solver_name,
-                             max_plot_frequency_hz);
+                             max_plot_frequency_hz, hopf);
                 });
   if (plots)
     files.plots = {stem + "_root_locus.png", stem + "_damping_vs_speed.png",
                    stem + "_frequency_vs_speed.png"};
   files.markdown = stem + "_critical_speed.md";
   outputs.write(files.markdown, [&](std::ostream& out) {
-    write_markdown(out, model, result, conditions, eigen_solver_name, files);
+    write_markdown(out, model, result, conditions, eigen_solver_name, files, hopf);
   });
   if (plots) {
     const std::string tracks = stem + "_tracks.dat";
@@ -571,7 +609,8 @@ StabilityFiles write_stability_results(const Model& model, const CriticalSpeedRe
 }
 
 void print_critical_speed_summary(std::ostream& out, const Model& model,
-                                  const CriticalSpeedResult& r, double hunting_band_hz) {
+                                  const CriticalSpeedResult& r, double hunting_band_hz,
+                                  const HopfAssessment* hopf) {
   out << std::setprecision(6);
   if (!r.critical_speed_found) {
     out << model.name << ": " << verdict_sentence(r) << "\n";
@@ -583,6 +622,7 @@ void print_critical_speed_summary(std::ostream& out, const Model& model,
         << " Hz, mode " << m.name << "\n";
     if (r.loss.kind != LossOfStabilityKind::oscillatory_crossing)
       out << "loss of stability: " << describe_loss_of_stability(r.loss) << "\n";
+    if (hopf) out << "Hopf bifurcation: " << describe_hopf(*hopf) << "\n";
   }
   if (r.damping_limit_found) {
     out << "damping ratio below " << r.min_damping_ratio << " from " << std::fixed

@@ -4,6 +4,7 @@
 // the critical-speed JSON and the Markdown report that links the plots.
 #include <railstab/io/output_set.hpp>
 #include <railstab/model/model.hpp>
+#include <railstab/nonlinear/hopf_assessment.hpp>
 #include <railstab/stability/speed_analysis.hpp>
 #include <railstab/stability/verdict.hpp>
 
@@ -23,18 +24,23 @@ struct StabilityFiles {
 // commits): eigenvalue CSV, JSON, Markdown and, with `plots`, the gnuplot
 // data, script, PNGs and SVGs (gnuplot run and checked; throws GnuplotError).
 // `max_plot_frequency_hz` keeps the stiff contact modes off the plots and
-// bounds the JSON's modes_at_critical_speed (each with its shape).
+// bounds the JSON's modes_at_critical_speed (each with its shape). `hopf`:
+// the Hopf criticality at the critical speed (assess_hopf), written when
+// given (the JSON's first_lyapunov_coefficient and hopf_kind are null
+// without it).
 StabilityFiles write_stability_results(const Model& model, const CriticalSpeedResult& result,
                                        OutputSet& outputs, const std::string& stem,
                                        const std::string& eigen_solver_name, bool plots = true,
-                                       double max_plot_frequency_hz = 20.0);
+                                       double max_plot_frequency_hz = 20.0,
+                                       const HopfAssessment* hopf = nullptr);
 
 // The outcome for the terminal: the critical speed (or stable / unstable
 // over the range), where the steady state was lost, the first validity
 // warning, the first unstable mode above the hunting band
 // (`hunting_band_hz`), the number of speed evaluations and their time.
 void print_critical_speed_summary(std::ostream& out, const Model& model,
-                                  const CriticalSpeedResult& r, double hunting_band_hz);
+                                  const CriticalSpeedResult& r, double hunting_band_hz,
+                                  const HopfAssessment* hopf = nullptr);
 
 // Every name write_stability_results may write for `stem`.
 std::vector<std::string> stability_file_names(const std::string& stem);
