@@ -1,6 +1,6 @@
 #pragma once
 // What a creep law must provide, checked by the compiler for every law in the
-// creep-law variant (scene/scene_spec.hpp CreepLawTpl): a law that lacks a
+// creep-law variant (creep_law.hpp CreepLawTpl): a law that lacks a
 // member fails to compile there, with the member named.
 //   kName                 its creep_law name in scene files and reports
 //   validate()            std::invalid_argument naming the bad field
