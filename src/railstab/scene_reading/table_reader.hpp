@@ -102,10 +102,6 @@ class TableReader {
 
   // An array of exactly three numbers, e.g. [0.0, 1.0, -0.6075].
   Eigen::Vector3d vector3(std::string_view key, std::string_view unit) const;
-  Eigen::Vector3d vector3_or(std::string_view key, std::string_view unit,
-                             const Eigen::Vector3d& fallback) const {
-    return has(key) ? vector3(key, unit) : fallback;
-  }
 
   template <class Value>
   Value choice(std::string_view key, const Choices<Value>& choices) const {

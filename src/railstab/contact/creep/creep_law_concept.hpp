@@ -38,9 +38,4 @@ template <class... L> constexpr bool assert_creep_laws(std::type_identity<std::v
   return (assert_creep_law<L>() && ...);
 }
 
-// The creep_law name of the law a variant holds.
-template <class... L> const char* creep_law_name(const std::variant<L...>& law) {
-  return std::visit([](const auto& l) { return std::decay_t<decltype(l)>::kName; }, law);
-}
-
 }  // namespace railstab
