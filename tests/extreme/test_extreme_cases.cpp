@@ -22,14 +22,13 @@
 #include <optional>
 #include <string>
 #include <vector>
+#include "support/test_files.hpp"
 
 using namespace railstab;
 
 namespace {
 
-std::string case_path(const std::string& name) {
-  return std::string(RAILSTAB_CASES_DIR) + "/" + name + ".toml";
-}
+using railstab::test::case_path;
 
 bool contains(const std::string& text, const std::string& word) {
   return text.find(word) != std::string::npos;
