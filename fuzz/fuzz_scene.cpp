@@ -34,7 +34,7 @@ const std::string kSource = "fuzz.toml";
 const char* const kInternalNames[] = {
     "hertz_shape:", "eigen_dense:", "eigen_arpack_shift_invert:", "kalker_coefficients:",
     "kalker_table:", "combine_materials:", "modal_assurance:", "assemble_model:",
-    "solve_equilibrium:", "scene_loader:", "make_contact_table:", "make_profile_pair:"};
+    "solve_equilibrium:", "scene_reading:", "make_contact_table:", "make_profile_pair:"};
 
 // `input`: the scene text (a name the fuzzer copied into it may be quoted back).
 void check_message(const std::string& message, const std::string& input) {

@@ -4,14 +4,13 @@
 #include <railstab/integrate/integrator.hpp>
 
 #include <gtest/gtest.h>
+#include "support/test_files.hpp"
 
 using namespace railstab;
 
 namespace {
 
-std::string case_path(const std::string& name) {
-  return std::string(RAILSTAB_CASES_DIR) + "/" + name + ".toml";
-}
+using railstab::test::case_path;
 
 Trajectory run(const PreparedScene& scene, double t_end) {
   // The scene's integrator and tolerances: the defaults users run.

@@ -14,22 +14,16 @@
 #include <sstream>
 #include <string>
 #include <unistd.h>
+#include "support/test_files.hpp"
 
 namespace railstab {
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string case_path(const std::string& name) {
-  return std::string(RAILSTAB_CASES_DIR) + "/" + name + ".toml";
-}
+using railstab::test::case_path;
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using railstab::test::read_text;
 
 std::string warning_list(const ModelCheckReport& r) {
   std::string s;

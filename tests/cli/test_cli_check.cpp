@@ -7,24 +7,16 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include "support/test_files.hpp"
 
 using railstab::test::run_railstab;
 namespace fs = std::filesystem;
 
 namespace {
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() /
-                       ("railstab_cli_check_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path fresh_dir(const std::string& name) { return railstab::test::fresh_dir("cli_check", name); }
 
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
+using railstab::test::read_text;
 
 const std::string kBogie = std::string(RAILSTAB_CASES_DIR) + "/thesis_bogie_tangent.toml";
 

@@ -13,19 +13,14 @@
 #include <string>
 
 #include <unistd.h>
+#include "support/test_files.hpp"
 
 namespace fs = std::filesystem;
 using railstab::test::run_railstab;
 
 namespace {
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() /
-                       ("railstab_cg_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path fresh_dir(const std::string& name) { return railstab::test::fresh_dir("cg", name); }
 
 std::string conicity_line(const std::string& output) {
   const size_t at = output.find("equivalent conicity (EN 15302) at 3 mm:");

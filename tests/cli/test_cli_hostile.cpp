@@ -14,6 +14,7 @@
 #include <map>
 #include <regex>
 #include <sys/stat.h>
+#include "support/test_files.hpp"
 
 using namespace railstab;
 using railstab::test::run_railstab;
@@ -23,18 +24,9 @@ namespace {
 
 const std::string kScene = std::string(RAILSTAB_CASES_DIR) + "/textbook_wheelset.toml";
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() /
-                       ("railstab_cli_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path fresh_dir(const std::string& name) { return railstab::test::fresh_dir("cli", name); }
 
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
+using railstab::test::read_text;
 
 // Every file (relative path -> content) under `dir`, hidden ones included.
 std::map<std::string, std::string> contents(const fs::path& dir) {

@@ -8,14 +8,12 @@
 #include <filesystem>
 #include <fstream>
 #include <unistd.h>
+#include "support/test_files.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
-std::string file_text(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
+using railstab::test::read_text;
 }  // namespace
 
 TEST(CliSet, SameFilesAsAnEditedSceneAndBadSettingsRefused) {
@@ -23,7 +21,7 @@ TEST(CliSet, SameFilesAsAnEditedSceneAndBadSettingsRefused) {
   fs::remove_all(dir);
   fs::create_directories(dir);
   const std::string scene = std::string(RAILSTAB_CASES_DIR) + "/textbook_wheelset.toml";
-  std::string text = file_text(scene);
+  std::string text = read_text(scene);
   const std::string from = "conicity = 0.1 ";
   ASSERT_NE(text.find(from), std::string::npos);
   text.replace(text.find(from), from.size(), "conicity = 0.2 ");
@@ -42,7 +40,7 @@ TEST(CliSet, SameFilesAsAnEditedSceneAndBadSettingsRefused) {
   int compared = 0;
   for (const fs::directory_entry& f : fs::directory_iterator(dir / "a")) {
     if (f.path().extension() != ".csv") continue;
-    EXPECT_EQ(file_text(f.path()), file_text(dir / "b" / f.path().filename())) << f.path();
+    EXPECT_EQ(read_text(f.path()), read_text(dir / "b" / f.path().filename())) << f.path();
     ++compared;
   }
   EXPECT_GT(compared, 0);

@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include "support/benchmark_profiles.hpp"
 
 using namespace railstab;
 using namespace railstab::testing;
@@ -164,16 +165,11 @@ TEST(CharacteristicFunctions, HollowWheelOnCircularRailMatchesTwoCircleClosedFor
 }
 
 namespace {
-ProfilePair benchmark_pair() {
-  const std::string dir = std::string(RAILSTAB_CASES_DIR) + "/profiles/";
-  return make_profile_pair(read_simpack_profile(dir + "MBench_S1002_v3.prw", ProfileKind::wheel),
-                           read_simpack_profile(dir + "MBench_UIC60_v3.prr", ProfileKind::rail),
-                           ProfilePairParameters{});
-}
+using railstab::test::benchmark_profile_pair;
 }  // namespace
 
 TEST(CharacteristicFunctions, SymmetricPairGivesOddDeltaRAndRoll) {
-  const ProfilePair pair = benchmark_pair();
+  const ProfilePair pair = benchmark_profile_pair();
   for (double y : {0.0013, 0.0031, 0.0047, 0.0058, 0.0071, 0.0094}) {
     const RigidContactSolution a = solve_rigid_contact(pair, y), b = solve_rigid_contact(pair, -y);
     const double dra = a.left.front().rolling_radius_m - a.right.front().rolling_radius_m;
@@ -188,7 +184,7 @@ TEST(CharacteristicFunctions, SymmetricPairGivesOddDeltaRAndRoll) {
 // Manchester Contact Benchmark (Shackleton and Iwnicki 2008), case A: the
 // S1002/UIC60 1:40 pair reaches flange contact between 6.0 and 6.5 mm.
 TEST(CharacteristicFunctions, BenchmarkPairReachesFlangeContactBetween6And6Point5mm) {
-  const FlangeContact fc = find_flange_contact(benchmark_pair());
+  const FlangeContact fc = find_flange_contact(benchmark_profile_pair());
   ASSERT_TRUE(fc.found);
   EXPECT_GT(fc.lateral_shift_m, 0.0060);
   EXPECT_LT(fc.lateral_shift_m, 0.0065);

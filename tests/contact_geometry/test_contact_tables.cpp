@@ -11,6 +11,7 @@
 
 #include <chrono>
 #include <cmath>
+#include "support/benchmark_profiles.hpp"
 
 using namespace railstab;
 using namespace railstab::testing;
@@ -18,12 +19,7 @@ using namespace railstab::testing;
 namespace {
 
 const ProfilePair& benchmark_pair() {
-  static const ProfilePair pair = [] {
-    const std::string dir = std::string(RAILSTAB_CASES_DIR) + "/profiles/";
-    return make_profile_pair(read_simpack_profile(dir + "MBench_S1002_v3.prw", ProfileKind::wheel),
-                             read_simpack_profile(dir + "MBench_UIC60_v3.prr", ProfileKind::rail),
-                             ProfilePairParameters{});
-  }();
+  static const ProfilePair pair = railstab::test::benchmark_profile_pair();
   return pair;
 }
 const ContactTable& benchmark_table() {

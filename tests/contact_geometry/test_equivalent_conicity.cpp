@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <numbers>
+#include "support/benchmark_profiles.hpp"
 
 using namespace railstab;
 using namespace railstab::testing;
@@ -70,11 +71,7 @@ TEST(EquivalentConicity, ConicalPairGivesTanGammaWithTheRollCoupling) {
 // S1002/UIC60 1:40 at 1435 mm are around 0.15-0.2 at 3 mm; this code gives
 // 0.184 (yaw neglected, rigid contact).
 TEST(EquivalentConicity, BenchmarkPairAt3mm) {
-  const std::string dir = std::string(RAILSTAB_CASES_DIR) + "/profiles/";
-  const ProfilePair pair =
-      make_profile_pair(read_simpack_profile(dir + "MBench_S1002_v3.prw", ProfileKind::wheel),
-                        read_simpack_profile(dir + "MBench_UIC60_v3.prr", ProfileKind::rail),
-                        ProfilePairParameters{});
+  const ProfilePair pair = railstab::test::benchmark_profile_pair();
   const ContactGeometrySummary s = summarise_contact_geometry(pair);
   EXPECT_NEAR(s.equivalent_conicity_at_3mm, 0.1836, 0.0005);
   EXPECT_GT(s.equivalent_conicity_at_3mm, 0.15);

@@ -26,14 +26,13 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include "support/test_files.hpp"
 
 using namespace railstab;
 
 namespace {
 
-std::string case_path(const std::string& name) {
-  return std::string(RAILSTAB_CASES_DIR) + "/" + name + ".toml";
-}
+using railstab::test::case_path;
 
 // A real eigenvalue comes out with |Im| at round-off, of either sign.
 bool in_box(std::complex<double> l, const BandCoverOptions& o) {

@@ -22,14 +22,13 @@
 #include <optional>
 #include <string>
 #include <vector>
+#include "support/test_files.hpp"
 
 using namespace railstab;
 
 namespace {
 
-std::string case_path(const std::string& name) {
-  return std::string(RAILSTAB_CASES_DIR) + "/" + name + ".toml";
-}
+using railstab::test::case_path;
 
 bool contains(const std::string& text, const std::string& word) {
   return text.find(word) != std::string::npos;
@@ -495,8 +494,8 @@ TEST(ExtremeConservative, EnergyConservedOverSixtySeconds) {
     GTEST_SKIP() << "known failure: the wheelset spin changes by " << spin_change
                  << " rad/s with no creep force, and the energy by " << drift / perturbation
                  << " of the perturbation energy: the spring_damper_3d moment R_W1 (d x f) "
-                    "(elements/spring_damper.hpp) acts on the wheelset's spin through "
-                    "body_accelerations (model/body_motion.hpp) although its frame I does not "
+                    "(elements/spring_damper_3d.hpp) acts on the wheelset's spin through "
+                    "body_accelerations (kinematics/body_motion.hpp) although its frame I does not "
                     "spin (see the report of tests/extreme)";
   EXPECT_LT(spin_change, 1e-6);
   // 1e-4 of the perturbation energy over 60 s. With the spin fixed the

@@ -10,24 +10,16 @@
 #include <filesystem>
 #include <fstream>
 #include <unistd.h>
+#include "support/test_files.hpp"
 
 namespace fs = std::filesystem;
 using railstab::test::run_railstab;
 
 namespace {
 
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
+using railstab::test::read_text;
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() /
-                       ("railstab_partial_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path fresh_dir(const std::string& name) { return railstab::test::fresh_dir("partial", name); }
 
 }  // namespace
 

@@ -22,14 +22,13 @@
 
 #include <algorithm>
 #include <string>
+#include "support/test_files.hpp"
 
 using namespace railstab;
 
 namespace {
 
-std::string case_path(const std::string& name) {
-  return std::string(RAILSTAB_CASES_DIR) + "/" + name + ".toml";
-}
+using railstab::test::case_path;
 
 Trajectory run(const PreparedScene& s, IntegratorKind kind, NewtonMatrixKind newton, double t_end,
                double tolerance_scale = 1.0) {

@@ -31,6 +31,7 @@
 #include <sys/stat.h>
 #include <fcntl.h>
 #include <unistd.h>
+#include "support/test_files.hpp"
 
 using namespace railstab;
 namespace fs = std::filesystem;
@@ -44,13 +45,7 @@ const std::vector<std::string> kHostileNames = {
     "ctl\x01\x1f",  "del\x7f",       "\xc3\xbc" "ber",  "bad\xff",   "'; system('x'); '",
     "..", "../evil", std::string("nul\0byte", 8)};
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() /
-                       ("railstab_hostile_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path fresh_dir(const std::string& name) { return railstab::test::fresh_dir("hostile", name); }
 
 std::map<std::string, std::string> folder_contents(const fs::path& dir) {
   std::map<std::string, std::string> contents;
@@ -66,10 +61,7 @@ std::map<std::string, std::string> folder_contents(const fs::path& dir) {
   return contents;
 }
 
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
+using railstab::test::read_text;
 
 }  // namespace
 

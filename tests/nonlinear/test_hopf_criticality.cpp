@@ -255,6 +255,30 @@ TEST(HopfBrusselator, PredictedAmplitudeMatchesTimeDomainCycle) {
   }
 }
 
+namespace {
+
+// The Brusselator `s` embedded in (x, y, z1, z2, n) as described below, or
+// without `neutral` in (x, y, z1, z2) alone: the right-hand side in the
+// coordinates w = S s (S_inv = S^{-1}).
+auto embedded_brusselator(const Brusselator& s, const Eigen::VectorXd& x0, const Eigen::MatrixXd& S,
+                          const Eigen::MatrixXd& S_inv, bool neutral) {
+  return [s, x0, S, S_inv, neutral](const auto& w) {
+    using T = typename std::decay_t<decltype(w)>::Scalar;
+    const VecX<T> v = S_inv.cast<T>() * w;
+    const VecX<T> xy = s(VecX<T>(v.head(2)));
+    const T X = v(0) - x0(0), Y = v(1) - x0(1);
+    VecX<T> f(neutral ? 5 : 4);
+    f(0) = xy(0);
+    f(1) = xy(1);
+    f(2) = -3.0 * v(2) + 0.5 * v(3) + 0.8 * X - 0.3 * Y + 1.5 * X * Y;
+    f(3) = -0.5 * v(2) - 2.0 * v(3) + 0.2 * Y + 0.7 * X * X - Y * Y * X;
+    if (neutral) f(4) = X * X + 0.3 * X * Y;  // n: neutral, drifts with the oscillation
+    return VecX<T>(S.cast<T>() * f);
+  };
+}
+
+}  // namespace
+
 // Embedded in 5 states: z1, z2 stable, driven one way by (X, Y) = (x - x0,
 // y - y0) linearly and quadratically, and n' = X^2 + 0.3 X Y (a neutral drift: A
 // has a zero column, so it is singular, and the drift is a symmetry: f does
@@ -278,19 +302,7 @@ TEST(HopfEmbedded, AmplitudeInvariantUnderEmbeddingAndCoordinates) {
   Eigen::VectorXd s0(5);
   s0 << x0(0), x0(1), 0.0, 0.0, 0.0;
   const Eigen::VectorXd w0 = S * s0;
-  auto system = [&](const auto& w) {
-    using T = typename std::decay_t<decltype(w)>::Scalar;
-    const VecX<T> v = S_inv.cast<T>() * w;
-    const VecX<T> xy = s(VecX<T>(v.head(2)));
-    const T X = v(0) - x0(0), Y = v(1) - x0(1);
-    VecX<T> f(5);
-    f(0) = xy(0);
-    f(1) = xy(1);
-    f(2) = -3.0 * v(2) + 0.5 * v(3) + 0.8 * X - 0.3 * Y + 1.5 * X * Y;
-    f(3) = -0.5 * v(2) - 2.0 * v(3) + 0.2 * Y + 0.7 * X * X - Y * Y * X;
-    f(4) = X * X + 0.3 * X * Y;  // n: neutral, drifts with the oscillation
-    return VecX<T>(S.cast<T>() * f);
-  };
+  auto system = embedded_brusselator(s, x0, S, S_inv, true);
   // Jacobian in w: S J_s S^{-1}, J_s by hand.
   Eigen::MatrixXd Js = Eigen::MatrixXd::Zero(5, 5);
   Js.topLeftCorner(2, 2) = s.jacobian();
@@ -311,18 +323,7 @@ TEST(HopfEmbedded, AmplitudeInvariantUnderEmbeddingAndCoordinates) {
   // Without the neutral state A is regular and the answer is the same.
   Eigen::MatrixXd S4 = S.topLeftCorner(4, 4);
   const Eigen::MatrixXd S4_inv = S4.inverse();
-  auto regular = [&](const auto& w) {
-    using T = typename std::decay_t<decltype(w)>::Scalar;
-    const VecX<T> v = S4_inv.cast<T>() * w;
-    const VecX<T> xy = s(VecX<T>(v.head(2)));
-    const T X = v(0) - x0(0), Y = v(1) - x0(1);
-    VecX<T> f(4);
-    f(0) = xy(0);
-    f(1) = xy(1);
-    f(2) = -3.0 * v(2) + 0.5 * v(3) + 0.8 * X - 0.3 * Y + 1.5 * X * Y;
-    f(3) = -0.5 * v(2) - 2.0 * v(3) + 0.2 * Y + 0.7 * X * X - Y * Y * X;
-    return VecX<T>(S4.cast<T>() * f);
-  };
+  auto regular = embedded_brusselator(s, x0, S4, S4_inv, false);
   const HopfCoefficient h4 = hopf_coefficient(S4 * Js.topLeftCorner(4, 4) * S4_inv,
                                               multilinear_forms(regular, Eigen::VectorXd(S4 * s0.head(4))),
                                               cd(0.0, a));

@@ -40,15 +40,14 @@
 #include <string>
 #include <utility>
 #include <vector>
+#include "support/test_files.hpp"
 
 using namespace railstab;
 namespace tb = railstab::textbook;
 
 namespace {
 
-std::string case_path(const std::string& name) {
-  return std::string(RAILSTAB_CASES_DIR) + "/" + name + ".toml";
-}
+using railstab::test::case_path;
 
 // Coordinates of a closed-form model, in its order: (body name, coordinate).
 using Coordinates = std::vector<std::pair<std::string, int>>;

@@ -21,6 +21,7 @@
 #include <sstream>
 
 #include <unistd.h>
+#include "support/test_files.hpp"
 
 using namespace railstab;
 namespace fs = std::filesystem;
@@ -67,12 +68,7 @@ TEST(RunConditions, CantDeficiencyAndTrackInTheArc) {
 }
 
 namespace {
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using railstab::test::read_text;
 }  // namespace
 
 TEST(RunConditions, CurveReportJsonAndMarkdownAgree) {

@@ -21,14 +21,13 @@
 
 #include <algorithm>
 #include <string>
+#include "support/test_files.hpp"
 
 using namespace railstab;
 
 namespace {
 
-std::string case_path(const std::string& name) {
-  return std::string(RAILSTAB_CASES_DIR) + "/" + name + ".toml";
-}
+using railstab::test::case_path;
 
 std::string vehicle_text() { return read_regular_file(case_path("thesis_vehicle_tangent")); }
 

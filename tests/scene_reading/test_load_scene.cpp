@@ -6,9 +6,10 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <initializer_list>
 #include <map>
+#include <ostream>
 #include <string>
+#include <vector>
 
 #include <railstab/io/sha256.hpp>
 #include <railstab/scene_reading/load_scene.hpp>
@@ -125,7 +126,7 @@ std::string minimal_with(const std::string& original, const std::string& replace
 }
 
 // Parses `text`, expecting a SceneError whose message contains every fragment.
-void expect_scene_error(const std::string& text, std::initializer_list<std::string> fragments) {
+void expect_scene_error(const std::string& text, const std::vector<std::string>& fragments) {
   try {
     load_scene_text(text, kSource);
     ADD_FAILURE() << "expected a SceneError, the scene parsed";
@@ -238,164 +239,131 @@ TEST(SceneLoader, OptionalContactKeysForOtherModelsAreAccepted) {
   EXPECT_DOUBLE_EQ(scene.contacts[0].conicity, 0.2);
 }
 
-// --- Structure and types ---------------------------------------------------------
+// --- Mistakes ----------------------------------------------------------------------
 
-TEST(SceneLoader, MissingRequiredKey) {
-  expect_scene_error(minimal_with("speed_m_per_s = 20.0\n", ""),
-                     {"scene.speed_m_per_s", "expected a number (m/s)", "key is missing"});
+namespace {
+
+// One mistake in the minimal scene: the first `original` replaced by
+// `replacement`; the SceneError's message holds every fragment.
+struct SceneMistake {
+  const char* name;  // the test's name
+  std::string original, replacement;
+  std::vector<std::string> fragments;
+  friend void PrintTo(const SceneMistake& m, std::ostream* os) { *os << m.name; }
+};
+
+const std::vector<SceneMistake> kSceneMistakes = {
+    // Structure and types.
+    {"MissingRequiredKey", "speed_m_per_s = 20.0\n", "",
+     {"scene.speed_m_per_s", "expected a number (m/s)", "key is missing"}},
+    {"WrongTypeStringForNumber", "mass_kg = 3020.0", "mass_kg = \"heavy\"",
+     {"bodies[2].mass_kg", "expected a number (kg)", "got a string 'heavy'"}},
+    {"WrongTypeArrayOfWrongLength", "inertia_kg_m2 = [2130.912, 4063.712, 4063.712]", "inertia_kg_m2 = [2130.912, 4063.712]",
+     {"bodies[2].inertia_kg_m2", "expected an array of 3 numbers (kg m2)", "got an array of 2 elements"}},
+    {"WrongTypeInsideArray", "point2_m = [1.5, 1.0, -0.6075]", "point2_m = [1.5, true, -0.6075]",
+     {"elements[0].point2_m[1]", "expected a number (m)", "got true"}},
+    {"NonFiniteLength", "length_m = 3000.0", "length_m = inf",
+     {"track.segments[2].length_m", "expected a finite number (m)", "got inf"}},
+    {"NonFiniteMass", "mass_kg = 3020.0", "mass_kg = nan",
+     {"bodies[2].mass_kg", "expected a finite number (kg)"}},
+    {"WrongUnitKeySuggestsTheKnownKey", "mass_kg = 3020.0", "mass_g = 3020000.0",
+     {"bodies[2].mass_g", "unknown key", "did you mean 'mass_kg'?"}},
+    {"MisspeltKeySuggestsTheKnownKey", "stiffness_N_per_m = [1.0", "stifness_N_per_m = [1.0",
+     {"elements[1].stifness_N_per_m", "unknown key", "did you mean 'stiffness_N_per_m'?"}},
+    {"MisspeltSectionSuggestsTheKnownSection", "[simulation]", "[simulaton]",
+     {": simulaton: unknown key", "did you mean 'simulation'?"}},
+    {"KeyOfAnotherElementTypeIsRejected", "actuator_force_N = [0.0, 5.0, 0.0]", "actuator_moment_N_m = [0.0, 5.0, 0.0]",
+     {"elements[1].actuator_moment_N_m", "expected no actuator_moment_N_m on a spring_damper_3d"}},
+    {"BadEnumString", "type = \"clothoid\"", "type = \"clothiod\"",
+     {"track.segments[1].type", "expected one of 'tangent', 'clothoid', 'arc'", "got 'clothiod'", "did you mean 'clothoid'?"}},
+    {"TomlSyntaxErrorReportsLineAndColumn",  // line 5 of kMinimalScene (it starts with a newline)
+     "reference_arc_length_m = 600.0", "reference_arc_length_m = = 600.0",
+     {"line 5, column", "expected valid TOML"}},
+    {"UnknownFreeCoordinate", "free = [\"yaw\", \"y\"]", "free = [\"yaw\", \"lateral\"]",
+     {"bodies[2].free[1]", "expected one of 'x', 'y', 'z', 'roll', 'pitch', 'yaw'", "got 'lateral'"}},
+    {"DuplicateFreeCoordinate", "free = [\"yaw\", \"y\"]", "free = [\"yaw\", \"y\", \"yaw\"]",
+     {"bodies[2].free[2]", "expected each coordinate at most once", "'yaw' a second time"}},
+    {"ClothoidWithBothEndCurvatures", "end_radius_m = 1000.0", "end_radius_m = 1000.0\nend_curvature_per_m = 0.001",
+     {"track.segments[1]:", "expected exactly one of end_radius_m", "got both"}},
+    {"ClothoidWithNeitherEndCurvature", "end_radius_m = 1000.0\nturn = \"left\"", "",
+     {"track.segments[1]:", "expected exactly one of end_radius_m", "got neither"}},
+    {"NegativeContactDamping", "cone_angle_rad = 0.12", "cone_angle_rad = 0.12\nnormal_damping_N_s_per_m = -1.0",
+     {"contacts.cone.normal_damping_N_s_per_m", "expected a damping in [0, 1e+08] N s/m", "got -1"}},
+    {"ContactDampingWithPrescribedNormalForce", "normal = \"hertz\"", "normal = \"prescribed\"\nprescribed_wheel_load_N = 5.0e4\n"
+        "normal_damping_N_s_per_m = 1.0e4",
+     {"contacts.cone.normal_damping_N_s_per_m", "0 with normal = 'prescribed'", "got 10000"}},
+    {"PrescribedNormalForceNeedsTheWheelLoad", "normal = \"hertz\"", "normal = \"prescribed\"",
+     {"contacts.cone.prescribed_wheel_load_N", "expected a number (N)", "required when normal = 'prescribed'"}},
+    {"ConstantTangentialForceNeedsItsCoefficients", "tangential = \"kalker_hertz\"", "tangential = \"constant\"",
+     {"contacts.cone.f11_N", "required when tangential = 'constant'"}},
+    {"LinearConicityNeedsTheConicity", "geometry = \"knife_edge_cone\"", "geometry = \"linear_conicity\"",
+     {"contacts.cone.conicity", "required when geometry = 'linear_conicity'"}},
+    {"RigidBodyMustNotHaveContact", "free = [\"yaw\", \"y\"]", "free = [\"yaw\", \"y\"]\ncontact = \"cone\"",
+     {"bodies[2].contact", "expected no contact on a rigid_body", "got a string 'cone'"}},
+    // Semantic checks.
+    {"NegativeMass", "mass_kg = 3020.0", "mass_kg = -3",
+     {"bodies[2].mass_kg", "expected a mass in [0.1, 1e+06] kg", "got -3"}},
+    {"NonPositiveDefiniteInertia", "inertia_kg_m2 = [2130.912, 4063.712, 4063.712]", "inertia_kg_m2 = [1.0, 1.0, 5.0]",
+     {"bodies[2].inertia_kg_m2", "expected principal moments with Ji + Jj >= Jk", "not a physical (positive-definite) inertia"}},
+    {"ZeroPrincipalMomentOfInertia", "inertia_kg_m2 = [2130.912, 4063.712, 4063.712]", "inertia_kg_m2 = [1.0, 0.0, 1.0]",
+     {"bodies[2].inertia_kg_m2[1]", "expected a principal moment of inertia in [1e-04, 1e+08] kg m2", "got 0"}},
+    {"NonAxisymmetricWheelset", "inertia_kg_m2 = [799.35, 93.75, 799.35]\ntrack_offset_m = -3.0", "inertia_kg_m2 = [799.35, 93.75, 850.0]\ntrack_offset_m = -3.0",
+     {"bodies[1].inertia_kg_m2", "expected Jx = Jz", "the model drops its spin angle", "got Jx = 799.35, Jz = 850"}},
+    {"UnknownBodyInElement", "body1 = \"wheelset2\"", "body1 = \"wheelset3\"",
+     {"elements[2].body1", "unknown body 'wheelset3'", "(bodies: wheelset1, wheelset2, bogie1; or 'track')"}},
+    {"ElementBodiesMustDiffer", "body1 = \"wheelset1\"", "body1 = \"bogie1\"",
+     {"elements[0].body2", "expected a body other than body1"}},
+    {"OnlyBody1MayBeTheTrack", "body2 = \"bogie1\"\npoint1_m = [0.0, 0.0, 0.5]", "body2 = \"track\"\npoint1_m = [0.0, 0.0, 0.5]",
+     {"elements[1].body2", "only body1 may be 'track'"}},
+    {"NegativeStiffness", "stiffness_N_per_m = [1.0, 2.0, 3.0]", "stiffness_N_per_m = [1.0, -2.0, 3.0]",
+     {"elements[1].stiffness_N_per_m[1]", "expected a stiffness in [0, 1e+11] N/m", "got -2"}},
+    {"ZeroSpeedWithCreepForces", "speed_m_per_s = 20.0", "speed_m_per_s = 0.0",
+     {"scene.speed_m_per_s", "expected > 0 when creep forces are on", "creepages are divided by the speed", "got 0"}},
+    {"UnknownContact", "contact = \"cone\"\ninitial_offset", "contact = \"cylinder\"\ninitial_offset",
+     {"bodies[0].contact", "unknown contact 'cylinder' (contacts: cone)"}},
+    {"ReservedBodyName", "name = \"bogie1\"", "name = \"track\"",
+     {"bodies[2].name", "expected a name other than 'track'"}},
+    {"DuplicateBodyName", "name = \"wheelset2\"", "name = \"wheelset1\"",
+     {"bodies[1].name", "expected a unique body name", "already the name of bodies[0]"}},
+    {"ConeAngleOutOfRange", "cone_angle_rad = 0.12", "cone_angle_rad = 0.6",
+     {"contacts.cone.cone_angle_rad", "expected a cone angle in (0, 0.5) rad", "got 0.6"}},
+    {"PoissonRatioOutOfRange", "cone_angle_rad = 0.12", "cone_angle_rad = 0.12\nwheel_poisson_ratio = 0.5",
+     {"contacts.cone.wheel_poisson_ratio", "expected a Poisson ratio in [0, 0.5)"}},
+    {"CantMustBeLessThanRailDistance", "end_cant_m = 0.05", "end_cant_m = 1.6",
+     {"track.segments[1].end_cant_m", "expected |cant| < rail_contact_distance_m = 1.5 m", "got 1.6"}},
+    {"BodiesMustStartOnTheTrack", "reference_arc_length_m = 600.0", "reference_arc_length_m = 2.0",
+     {"bodies[1].track_offset_m", "inside the track [0, 4200] m", "got 2 - 3 = -1 m"}},
+    {"SimulationTimesMustBePositive", "t_end_s = 5.0", "t_end_s = 0.0",
+     {"simulation.t_end_s", "expected an end time in (0, 1e+05] s", "got 0"}},
+    {"MisspeltIntegrator", "t_end_s = 5.0", "t_end_s = 5.0\nintegrator = \"cvode_bfd\"",
+     {"simulation.integrator", "one of", "'cvode_bdf'", "got 'cvode_bfd'"}},
+    {"FractionalIntegratorOrder", "t_end_s = 5.0", "t_end_s = 5.0\nintegrator_order = 2.5",
+     {"simulation.integrator_order", "an order arkode_dirk offers: 2, 3, 4, 5", "got 2.5"}},
+    {"IntegratorOrderTheMethodLacks", "t_end_s = 5.0", "t_end_s = 5.0\nintegrator = \"cvode_bdf\"\nintegrator_order = 7",
+     {"simulation.integrator_order", "an order cvode_bdf offers: 1, 2, 3, 4, 5", "got 7"}},
+    {"FrictionCoefficientWithLinearKalker", "tangential = \"kalker_hertz\"", "tangential = \"kalker_hertz\"\nfriction_coefficient = 0.3",
+     {"contacts.", ".friction_coefficient", "no friction_coefficient with creep_law = \"linear_kalker\""}},
+    {"FrictionCoefficientOutOfRange", "tangential = \"kalker_hertz\"", "tangential = \"kalker_hertz\"\ncreep_law = \"polach\"\n"
+        "friction_coefficient = 5.0",
+     {".friction_coefficient", "expected a number in (0, 2]", "got 5"}},
+    {"UnknownCreepLaw", "tangential = \"kalker_hertz\"", "tangential = \"kalker_hertz\"\ncreep_law = \"coulomb\"",
+     {".creep_law", "'linear_kalker', 'shen_hedrick_elkins', 'polach'"}},
+};
+
+class SceneLoaderMistake : public ::testing::TestWithParam<SceneMistake> {};
+
+}  // namespace
+
+TEST_P(SceneLoaderMistake, NamesTheFileTheKeyAndWhatWasExpected) {
+  expect_scene_error(minimal_with(GetParam().original, GetParam().replacement), GetParam().fragments);
 }
 
-TEST(SceneLoader, WrongTypeStringForNumber) {
-  expect_scene_error(minimal_with("mass_kg = 3020.0", "mass_kg = \"heavy\""),
-                     {"bodies[2].mass_kg", "expected a number (kg)", "got a string 'heavy'"});
-}
+INSTANTIATE_TEST_SUITE_P(SceneLoader, SceneLoaderMistake, ::testing::ValuesIn(kSceneMistakes),
+                         [](const ::testing::TestParamInfo<SceneMistake>& info) {
+                           return std::string(info.param.name);
+                         });
 
-TEST(SceneLoader, WrongTypeArrayOfWrongLength) {
-  expect_scene_error(minimal_with("inertia_kg_m2 = [2130.912, 4063.712, 4063.712]",
-                                  "inertia_kg_m2 = [2130.912, 4063.712]"),
-                     {"bodies[2].inertia_kg_m2", "expected an array of 3 numbers (kg m2)",
-                      "got an array of 2 elements"});
-}
-
-TEST(SceneLoader, WrongTypeInsideArray) {
-  expect_scene_error(
-      minimal_with("point2_m = [1.5, 1.0, -0.6075]", "point2_m = [1.5, true, -0.6075]"),
-      {"elements[0].point2_m[1]", "expected a number (m)", "got true"});
-}
-
-TEST(SceneLoader, NonFiniteNumber) {
-  expect_scene_error(minimal_with("length_m = 3000.0", "length_m = inf"),
-                     {"track.segments[2].length_m", "expected a finite number (m)", "got inf"});
-  expect_scene_error(minimal_with("mass_kg = 3020.0", "mass_kg = nan"),
-                     {"bodies[2].mass_kg", "expected a finite number (kg)"});
-}
-
-TEST(SceneLoader, WrongUnitKeySuggestsTheKnownKey) {
-  expect_scene_error(minimal_with("mass_kg = 3020.0", "mass_g = 3020000.0"),
-                     {"bodies[2].mass_g", "unknown key", "did you mean 'mass_kg'?"});
-}
-
-TEST(SceneLoader, MisspeltKeySuggestsTheKnownKey) {
-  expect_scene_error(
-      minimal_with("stiffness_N_per_m = [1.0", "stifness_N_per_m = [1.0"),
-      {"elements[1].stifness_N_per_m", "unknown key", "did you mean 'stiffness_N_per_m'?"});
-  expect_scene_error(minimal_with("[simulation]", "[simulaton]"),
-                     {": simulaton: unknown key", "did you mean 'simulation'?"});
-}
-
-TEST(SceneLoader, KeyOfAnotherElementTypeIsRejected) {
-  expect_scene_error(
-      minimal_with("actuator_force_N = [0.0, 5.0, 0.0]", "actuator_moment_N_m = [0.0, 5.0, 0.0]"),
-      {"elements[1].actuator_moment_N_m", "expected no actuator_moment_N_m on a spring_damper_3d"});
-}
-
-TEST(SceneLoader, BadEnumString) {
-  expect_scene_error(minimal_with("type = \"clothoid\"", "type = \"clothiod\""),
-                     {"track.segments[1].type", "expected one of 'tangent', 'clothoid', 'arc'",
-                      "got 'clothiod'", "did you mean 'clothoid'?"});
-}
-
-TEST(SceneLoader, TomlSyntaxErrorReportsLineAndColumn) {
-  // Line 5 of kMinimalScene (it starts with a newline) is reference_arc_length_m.
-  expect_scene_error(
-      minimal_with("reference_arc_length_m = 600.0", "reference_arc_length_m = = 600.0"),
-      {"line 5, column", "expected valid TOML"});
-}
-
-TEST(SceneLoader, UnknownFreeCoordinateAndDuplicates) {
-  expect_scene_error(minimal_with("free = [\"yaw\", \"y\"]", "free = [\"yaw\", \"lateral\"]"),
-                     {"bodies[2].free[1]", "expected one of 'x', 'y', 'z', 'roll', 'pitch', 'yaw'",
-                      "got 'lateral'"});
-  expect_scene_error(
-      minimal_with("free = [\"yaw\", \"y\"]", "free = [\"yaw\", \"y\", \"yaw\"]"),
-      {"bodies[2].free[2]", "expected each coordinate at most once", "'yaw' a second time"});
-}
-
-TEST(SceneLoader, ClothoidNeedsExactlyOneEndCurvature) {
-  expect_scene_error(
-      minimal_with("end_radius_m = 1000.0", "end_radius_m = 1000.0\nend_curvature_per_m = 0.001"),
-      {"track.segments[1]:", "expected exactly one of end_radius_m", "got both"});
-  expect_scene_error(minimal_with("end_radius_m = 1000.0\nturn = \"left\"", ""),
-                     {"track.segments[1]:", "expected exactly one of end_radius_m", "got neither"});
-}
-
-TEST(SceneLoader, ContactDampingMustNotBeNegative) {
-  expect_scene_error(minimal_with("cone_angle_rad = 0.12",
-                                  "cone_angle_rad = 0.12\nnormal_damping_N_s_per_m = -1.0"),
-                     {"contacts.cone.normal_damping_N_s_per_m", "expected a damping in [0, 1e+08] N s/m", "got -1"});
-  expect_scene_error(
-      minimal_with("normal = \"hertz\"",
-                   "normal = \"prescribed\"\nprescribed_wheel_load_N = 5.0e4\n"
-                   "normal_damping_N_s_per_m = 1.0e4"),
-      {"contacts.cone.normal_damping_N_s_per_m", "0 with normal = 'prescribed'", "got 10000"});
-}
-
-TEST(SceneLoader, RequiredKeysOfTheChosenContactModel) {
-  expect_scene_error(minimal_with("normal = \"hertz\"", "normal = \"prescribed\""),
-                     {"contacts.cone.prescribed_wheel_load_N", "expected a number (N)",
-                      "required when normal = 'prescribed'"});
-  expect_scene_error(minimal_with("tangential = \"kalker_hertz\"", "tangential = \"constant\""),
-                     {"contacts.cone.f11_N", "required when tangential = 'constant'"});
-  expect_scene_error(
-      minimal_with("geometry = \"knife_edge_cone\"", "geometry = \"linear_conicity\""),
-      {"contacts.cone.conicity", "required when geometry = 'linear_conicity'"});
-}
-
-TEST(SceneLoader, RigidBodyMustNotHaveContact) {
-  expect_scene_error(
-      minimal_with("free = [\"yaw\", \"y\"]", "free = [\"yaw\", \"y\"]\ncontact = \"cone\""),
-      {"bodies[2].contact", "expected no contact on a rigid_body", "got a string 'cone'"});
-}
-
-// --- Semantic checks ---------------------------------------------------------------
-
-TEST(SceneLoader, NegativeMass) {
-  expect_scene_error(minimal_with("mass_kg = 3020.0", "mass_kg = -3"),
-                     {"bodies[2].mass_kg", "expected a mass in [0.1, 1e+06] kg", "got -3"});
-}
-
-TEST(SceneLoader, NonPositiveDefiniteInertia) {
-  expect_scene_error(minimal_with("inertia_kg_m2 = [2130.912, 4063.712, 4063.712]",
-                                  "inertia_kg_m2 = [1.0, 1.0, 5.0]"),
-                     {"bodies[2].inertia_kg_m2", "expected principal moments with Ji + Jj >= Jk",
-                      "not a physical (positive-definite) inertia"});
-  expect_scene_error(minimal_with("inertia_kg_m2 = [2130.912, 4063.712, 4063.712]",
-                                  "inertia_kg_m2 = [1.0, 0.0, 1.0]"),
-                     {"bodies[2].inertia_kg_m2[1]", "expected a principal moment of inertia in [1e-04, 1e+08] kg m2", "got 0"});
-}
-
-TEST(SceneLoader, NonAxisymmetricWheelset) {
-  expect_scene_error(minimal_with("inertia_kg_m2 = [799.35, 93.75, 799.35]\ntrack_offset_m = -3.0",
-                                  "inertia_kg_m2 = [799.35, 93.75, 850.0]\ntrack_offset_m = -3.0"),
-                     {"bodies[1].inertia_kg_m2", "expected Jx = Jz",
-                      "the model drops its spin angle", "got Jx = 799.35, Jz = 850"});
-}
-
-TEST(SceneLoader, UnknownBodyInElement) {
-  expect_scene_error(minimal_with("body1 = \"wheelset2\"", "body1 = \"wheelset3\""),
-                     {"elements[2].body1", "unknown body 'wheelset3'",
-                      "(bodies: wheelset1, wheelset2, bogie1; or 'track')"});
-}
-
-TEST(SceneLoader, ElementBodiesMustDiffer) {
-  expect_scene_error(minimal_with("body1 = \"wheelset1\"", "body1 = \"bogie1\""),
-                     {"elements[0].body2", "expected a body other than body1"});
-  expect_scene_error(minimal_with("body2 = \"bogie1\"\npoint1_m = [0.0, 0.0, 0.5]",
-                                  "body2 = \"track\"\npoint1_m = [0.0, 0.0, 0.5]"),
-                     {"elements[1].body2", "only body1 may be 'track'"});
-}
-
-TEST(SceneLoader, NegativeStiffness) {
-  expect_scene_error(
-      minimal_with("stiffness_N_per_m = [1.0, 2.0, 3.0]", "stiffness_N_per_m = [1.0, -2.0, 3.0]"),
-      {"elements[1].stiffness_N_per_m[1]", "expected a stiffness in [0, 1e+11] N/m", "got -2"});
-}
-
-TEST(SceneLoader, ZeroSpeedWithCreepForces) {
-  expect_scene_error(minimal_with("speed_m_per_s = 20.0", "speed_m_per_s = 0.0"),
-                     {"scene.speed_m_per_s", "expected > 0 when creep forces are on",
-                      "creepages are divided by the speed", "got 0"});
-}
+// --- Accepted values, checks after overrides ------------------------------------------
 
 TEST(SceneLoader, ZeroSpeedWithoutCreepForcesIsAllowed) {
   const std::string at_rest =
@@ -418,46 +386,6 @@ TEST(SceneLoader, ValidateSceneCatchesCommandLineOverride) {
   }
 }
 
-TEST(SceneLoader, UnknownContact) {
-  expect_scene_error(
-      minimal_with("contact = \"cone\"\ninitial_offset", "contact = \"cylinder\"\ninitial_offset"),
-      {"bodies[0].contact", "unknown contact 'cylinder' (contacts: cone)"});
-}
-
-TEST(SceneLoader, ReservedAndDuplicateBodyNames) {
-  expect_scene_error(minimal_with("name = \"bogie1\"", "name = \"track\""),
-                     {"bodies[2].name", "expected a name other than 'track'"});
-  expect_scene_error(
-      minimal_with("name = \"wheelset2\"", "name = \"wheelset1\""),
-      {"bodies[1].name", "expected a unique body name", "already the name of bodies[0]"});
-}
-
-TEST(SceneLoader, ContactNumbersOutOfRange) {
-  expect_scene_error(
-      minimal_with("cone_angle_rad = 0.12", "cone_angle_rad = 0.6"),
-      {"contacts.cone.cone_angle_rad", "expected a cone angle in (0, 0.5) rad", "got 0.6"});
-  expect_scene_error(
-      minimal_with("cone_angle_rad = 0.12", "cone_angle_rad = 0.12\nwheel_poisson_ratio = 0.5"),
-      {"contacts.cone.wheel_poisson_ratio", "expected a Poisson ratio in [0, 0.5)"});
-}
-
-TEST(SceneLoader, CantMustBeLessThanRailDistance) {
-  expect_scene_error(minimal_with("end_cant_m = 0.05", "end_cant_m = 1.6"),
-                     {"track.segments[1].end_cant_m",
-                      "expected |cant| < rail_contact_distance_m = 1.5 m", "got 1.6"});
-}
-
-TEST(SceneLoader, BodiesMustStartOnTheTrack) {
-  expect_scene_error(
-      minimal_with("reference_arc_length_m = 600.0", "reference_arc_length_m = 2.0"),
-      {"bodies[1].track_offset_m", "inside the track [0, 4200] m", "got 2 - 3 = -1 m"});
-}
-
-TEST(SceneLoader, SimulationTimesMustBePositive) {
-  expect_scene_error(minimal_with("t_end_s = 5.0", "t_end_s = 0.0"),
-                     {"simulation.t_end_s", "expected an end time in (0, 1e+05] s", "got 0"});
-}
-
 TEST(SceneLoader, IntegratorChoiceAndOrder) {
   const SceneSpec scene = load_scene_text(
       minimal_with("t_end_s = 5.0", "t_end_s = 5.0\nintegrator = \"cvode_bdf\"\nintegrator_order = 2"),
@@ -466,15 +394,6 @@ TEST(SceneLoader, IntegratorChoiceAndOrder) {
   EXPECT_EQ(scene.simulation.integrator_order, 2);
   EXPECT_EQ(load_scene_text(kMinimalScene, kSource).simulation.integrator,
             IntegratorKind::arkode_dirk);  // the default
-  expect_scene_error(minimal_with("t_end_s = 5.0", "t_end_s = 5.0\nintegrator = \"cvode_bfd\""),
-                     {"simulation.integrator", "one of", "'cvode_bdf'", "got 'cvode_bfd'"});
-  expect_scene_error(minimal_with("t_end_s = 5.0", "t_end_s = 5.0\nintegrator_order = 2.5"),
-                     {"simulation.integrator_order", "an order arkode_dirk offers: 2, 3, 4, 5",
-                      "got 2.5"});
-  expect_scene_error(minimal_with("t_end_s = 5.0",
-                                  "t_end_s = 5.0\nintegrator = \"cvode_bdf\"\nintegrator_order = 7"),
-                     {"simulation.integrator_order", "an order cvode_bdf offers: 1, 2, 3, 4, 5",
-                      "got 7"});
 }
 
 TEST(SceneLoader, MissingFileIsReported) {
@@ -564,16 +483,3 @@ TEST(SceneLoader, CreepLawIsReadWithItsFrictionCoefficient) {
   EXPECT_EQ(lin->kalker_reduction_factor, 1.0);
 }
 
-TEST(SceneLoader, CreepLawKeysAreChecked) {
-  expect_scene_error(minimal_with("tangential = \"kalker_hertz\"",
-                                  "tangential = \"kalker_hertz\"\nfriction_coefficient = 0.3"),
-                     {"contacts.", ".friction_coefficient",
-                      "no friction_coefficient with creep_law = \"linear_kalker\""});
-  expect_scene_error(minimal_with("tangential = \"kalker_hertz\"",
-                                  "tangential = \"kalker_hertz\"\ncreep_law = \"polach\"\n"
-                                  "friction_coefficient = 5.0"),
-                     {".friction_coefficient", "expected a number in (0, 2]", "got 5"});
-  expect_scene_error(minimal_with("tangential = \"kalker_hertz\"",
-                                  "tangential = \"kalker_hertz\"\ncreep_law = \"coulomb\""),
-                     {".creep_law", "'linear_kalker', 'shen_hedrick_elkins', 'polach'"});
-}

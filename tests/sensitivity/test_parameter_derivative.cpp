@@ -105,7 +105,7 @@ INSTANTIATE_TEST_SUITE_P(ThesisVehicle, ParameterDerivative,
                          ::testing::Values("elements.secondary_bogie1.damping_N_s_per_m[1]",
                                            "elements.primary_ws1.stiffness_N_per_m[0]",
                                            "bodies.carbody.mass_kg",
-                                           // Contact parameters (model/model_contact.hpp):
+                                           // Contact parameters (contact/model_contact.hpp):
                                            "contacts.thesis_knife_edge.cone_angle_rad"));
 
 // The Kalker reduction factor (linear law), the friction coefficient and

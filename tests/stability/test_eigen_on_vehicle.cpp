@@ -4,13 +4,12 @@
 #include <railstab/stability/speed_analysis.hpp>
 
 #include <gtest/gtest.h>
+#include "support/test_files.hpp"
 
 using namespace railstab;
 
 namespace {
-std::string case_path(const std::string& name) {
-  return std::string(RAILSTAB_CASES_DIR) + "/" + name + ".toml";
-}
+using railstab::test::case_path;
 }  // namespace
 
 // ARPACK (shift-invert near the hunting band) finds the same eigenvalues as

@@ -11,14 +11,13 @@
 #include <gtest/gtest.h>
 
 #include <set>
+#include "support/test_files.hpp"
 
 using namespace railstab;
 
 namespace {
 
-std::string case_path(const std::string& name) {
-  return std::string(RAILSTAB_CASES_DIR) + "/" + name + ".toml";
-}
+using railstab::test::case_path;
 
 // Names of the modes with Im >= 0 (a conjugate partner repeats its mate's).
 void expect_unique_names(const StabilityPoint& p) {

@@ -8,7 +8,7 @@
 //   = M g) and give the centripetal force M V^2 / R towards the curve centre;
 // - the steady state is the one the vehicle reaches when it runs into the
 //   curve: a time simulation from the end of the transition settles on it.
-#include <railstab/contact/wheel_forces.hpp>
+#include <railstab/model/wheel_forces.hpp>
 #include <railstab/equilibrium/equilibrium.hpp>
 #include <railstab/integrate/integrator.hpp>
 #include <railstab/scene_reading/load_scene.hpp>
@@ -130,7 +130,7 @@ TEST(SteadyCurvingProfiles, EquilibriumIsWhereTheSimulatedVehicleSettles) {
 // guided by two-point contact on the flange root of its outer wheel (38 and
 // 51 deg): an equilibrium, not a failure. Checked: the weight on the wheels
 // (1e-6), the centripetal force (2e-3), two loaded flange-root points,
-// and Y/Q (contact/wheel_forces.hpp) of the flanging wheel positive and
+// and Y/Q (model/wheel_forces.hpp) of the flanging wheel positive and
 // below EN 14363's 0.8 and Nadal's limit for S1002 (beta ~ 70 deg, mu 0.4:
 // 1.12), with no Nadal warning; Q summed over the wheels equals the sum of
 // the contact forces' components normal to each wheelset's track plane.

@@ -21,14 +21,13 @@
 #include <algorithm>
 #include <random>
 #include <string>
+#include "support/test_files.hpp"
 
 using namespace railstab;
 
 namespace {
 
-std::string case_path(const std::string& name) {
-  return std::string(RAILSTAB_CASES_DIR) + "/" + name + ".toml";
-}
+using railstab::test::case_path;
 
 // The four-car train's searches below: 100..120 m/s, grid 10 m/s, sparse solver.
 CriticalSpeedOptions four_car_search(bool track) {

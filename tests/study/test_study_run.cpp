@@ -1,7 +1,8 @@
 // Running a study: each point equals a critical-speed search of the scene
 // with its values set, a failing combination is a row with its error (the
-// others are computed), results do not depend on the number of threads, and
-// records of shards merge into the whole study.
+// others are computed), results do not depend on the number of threads,
+// records of shards merge into the whole study, and a record naming an
+// unknown eigen-solver is refused.
 #include <gtest/gtest.h>
 
 #include <railstab/setup/prepare_scene.hpp>
@@ -174,5 +175,25 @@ TEST(StudyRun, RecordWithTheOldKeyNamesIsRefusedNamingTheKeyAndItsNewName) {
     const std::string path = ::testing::TempDir() + "railstab_record_" + to + ".toml";
     const std::string said = refusal(path, replaced(now, from + " = ", to + " = "));
     EXPECT_EQ(said.rfind(path + ": points." + to + ": renamed to points." + from + ";", 0), 0u) << said;
+  }
+}
+
+// A record's eigen_solver is one of the solver names; the message is the
+// solver parser's, with the file and the key in front.
+TEST(StudyRun, RecordWithAnUnknownEigenSolverIsRefused) {
+  StudyDefinition d = textbook_study({parse_varied_key("contacts.textbook_linear.conicity=0.1:0.5:0.1")});
+  d.analysis.solver = "qr";
+  std::stringstream text;
+  write_study_record(text, d, StudyShard{}, {});
+  const std::string path = ::testing::TempDir() + "railstab_record_unknown_solver.toml";
+  { std::ofstream(path) << text.str(); }
+  try {
+    read_study_record(path);
+    ADD_FAILURE() << "expected the record to be refused";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find(path + ": study.eigen_solver: eigen-solver 'qr': expected "
+                                                "one of auto, dense, sparse, arpack"),
+              std::string::npos)
+        << e.what();
   }
 }

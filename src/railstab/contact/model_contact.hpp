@@ -10,7 +10,7 @@
 // (sensitivity/parameter_derivative.hpp); the evaluation reads them from
 // here, never from `spec`, whose copies of them are the scene's values.
 #include <railstab/contact/hertz.hpp>
-#include <railstab/scene/scene_spec.hpp>
+#include <railstab/contact/contact_spec.hpp>
 
 #include <variant>
 

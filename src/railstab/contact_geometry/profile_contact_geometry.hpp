@@ -4,8 +4,8 @@
 // shared (immutable) by every model built from it (a table costs ~0.1-0.2 s;
 // the twins of the preload and curve set-up reuse it).
 #include <railstab/contact_geometry/contact_tables.hpp>
+#include <railstab/contact_geometry/profile_source.hpp>
 #include <railstab/profiles/profile_pair.hpp>
-#include <railstab/scene/scene_spec.hpp>
 
 #include <memory>
 

@@ -37,11 +37,8 @@ inline Dual3 seed_dual3(double x0, double u, double v, double w) {
   return Dual3(Dual2(Dual1(x0, u), Dual1(v, 0.0)), Dual2(Dual1(w, 0.0), Dual1(0.0, 0.0)));
 }
 // Coefficients of f(x0 + e1 u + e2 v + e3 w).
-inline double dual3_value(const Dual3& y) { return y.v.v.v; }
 inline double dual3_first_u(const Dual3& y) { return y.v.v.d; }         // f' u
 inline double dual3_second_uv(const Dual3& y) { return y.v.d.d; }       // f''(u, v)
-inline double dual3_second_uw(const Dual3& y) { return y.d.v.d; }       // f''(u, w)
-inline double dual3_second_vw(const Dual3& y) { return y.d.d.v; }       // f''(v, w)
 inline double dual3_third_uvw(const Dual3& y) { return y.d.d.d; }       // f'''(u, v, w)
 
 }  // namespace railstab

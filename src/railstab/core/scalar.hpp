@@ -24,7 +24,7 @@ inline constexpr int kAdChunk = 24;
 using AdDerivatives = Eigen::Matrix<double, kAdChunk, 1>;
 using AdScalar = Eigen::AutoDiffScalar<AdDerivatives>;
 
-// Parameter sensitivities (linear/parameter_derivative.hpp): one parameter
+// Parameter sensitivities (sensitivity/parameter_derivative.hpp): one parameter
 // direction on top of the plain value (ParamDual) or of the state AD scalar
 // (ParamAdScalar: d/dp of the state Jacobian).
 using ParamDual = Dual<double>;

@@ -33,9 +33,6 @@ template <class S> const ElementEnds& ends_of(const ElementTpl<S>& e) {
 template <class S> ElementEnds& ends_of(ElementTpl<S>& e) {
   return std::visit([](auto& x) -> ElementEnds& { return x.ends; }, e);
 }
-template <class S> const char* type_of(const ElementTpl<S>& e) {
-  return std::visit([](const auto& x) { return std::decay_t<decltype(x)>::kType; }, e);
-}
 template <class S> int internal_states_of(const ElementTpl<S>& e) {
   return std::visit([](const auto& x) { return std::decay_t<decltype(x)>::kInternalStates; }, e);
 }

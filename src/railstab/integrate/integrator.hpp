@@ -5,7 +5,10 @@
 // statistics) over interchangeable steppers (stepper.hpp), one per SUNDIALS
 // package:
 //   cvode_bdf    CVODE BDF, variable order 1-5 (order caps it), dense
-//                Newton with the exact AD Jacobian. The default.
+//                Newton with the exact AD Jacobian. The default of
+//                IntegrationOptions; a scene's [simulation] defaults to
+//                arkode_dirk (SimulationSpec, scene/scene_spec.hpp), and so
+//                do the commands.
 //   cvode_adams  CVODE Adams-Moulton, orders 1-12, same Newton solver.
 //   arkode_erk   ARKODE ERKStep, explicit adaptive Runge-Kutta, default order
 //                4: Zonneveld 5-3-4 (5 stages, embedded order 3). No Jacobian.

@@ -33,11 +33,6 @@ bool ModelCallbackData::within_budget() {
 
 void prepare_imex_split(ModelCallbackData& data) { data.imex_split = true; }
 
-Eigen::VectorXd implicit_part_rhs(const Model& model, double speed_m_per_s, double t_s,
-                                  const Eigen::VectorXd& x) {
-  return rhs(model, speed_m_per_s, t_s, x, nullptr, ForceSelection::contact_and_inertia);
-}
-
 Eigen::Map<Eigen::VectorXd> as_eigen(N_Vector v) {
   return Eigen::Map<Eigen::VectorXd>(N_VGetArrayPointer(v), N_VGetLength(v));
 }

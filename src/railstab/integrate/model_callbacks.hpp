@@ -77,10 +77,6 @@ struct ModelCallbackData {
 // Prepares `data` for the IMEX split.
 void prepare_imex_split(ModelCallbackData& data);
 
-// The implicit part f_I of the IMEX split at (t, x) (see above).
-Eigen::VectorXd implicit_part_rhs(const Model& model, double speed_m_per_s, double t_s,
-                                  const Eigen::VectorXd& x);
-
 Eigen::Map<Eigen::VectorXd> as_eigen(N_Vector v);
 
 // SUNDIALS callbacks; user data is a ModelCallbackData*.

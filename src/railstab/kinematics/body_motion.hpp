@@ -98,15 +98,6 @@ template <class T> struct PointMotion {
 };
 
 template <class T>
-PointMotion<T> point_motion(const BodyMotion<T>& m, const Eigen::Vector3d& point_F) {
-  PointMotion<T> pm;
-  pm.arm_W = m.R_WF * to_scalar<T>(point_F);
-  pm.p_W = m.p_W + pm.arm_W;
-  pm.v_W = m.v_W + m.w_F_W.cross(pm.arm_W);
-  return pm;
-}
-
-template <class T>
 void apply_force_at(BodyMotion<T>& m, const Vec3<T>& arm_W, const Vec3<T>& force_W) {
   m.force_W += force_W;
   m.moment_W += arm_W.cross(force_W);

@@ -1,6 +1,6 @@
 #include <railstab/report/equilibrium_report.hpp>
 
-#include <railstab/contact/wheel_forces.hpp>
+#include <railstab/model/wheel_forces.hpp>
 
 #include <railstab/io/json_writer.hpp>
 #include <railstab/model/equations_of_motion.hpp>
@@ -104,7 +104,7 @@ std::string write_equilibrium_results(const PreparedScene& s, OutputSet& outputs
               << ", " << w.creep_force_y_N << " N, " << w.spin_moment_N_m << " N m)\n";
       }
       j.end_array();
-      // Y, Q and Y/Q per wheel (contact/wheel_forces.hpp), against Nadal.
+      // Y, Q and Y/Q per wheel (model/wheel_forces.hpp), against Nadal.
       j.key("wheel_forces").begin_array();
       for (const WheelForces& w : wheels) {
         if (w.body != int(b)) continue;

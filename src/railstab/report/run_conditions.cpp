@@ -14,15 +14,6 @@ namespace railstab {
 
 namespace {
 
-const char* geometry_name(ContactGeometryKind g) {
-  switch (g) {
-    case ContactGeometryKind::knife_edge_cone: return "knife_edge_cone";
-    case ContactGeometryKind::linear_conicity: return "linear_conicity";
-    case ContactGeometryKind::profiles: return "profiles";
-  }
-  return "unknown";
-}
-
 // "shen_hedrick_elkins (friction_coefficient 0.4, kalker_reduction_factor 1)"
 std::string creep_law_description(const CreepLawSpec& law) {
   return std::visit(
@@ -44,7 +35,7 @@ std::string contact_description(const ModelContact& c) {
   const ContactSpec& spec = c.spec;
   std::ostringstream s;
   s.precision(6);
-  s << spec.name << ": " << geometry_name(spec.geometry);
+  s << spec.name << ": " << contact_geometry_name(spec.geometry);
   if (spec.geometry == ContactGeometryKind::profiles && spec.profile_geometry)
     s << " " << spec.profile_geometry->pair.wheel.source << " on "
       << spec.profile_geometry->pair.rail.source;
@@ -53,7 +44,7 @@ std::string contact_description(const ModelContact& c) {
   else
     s << " lambda " << c.conicity;
   s << ", r0 " << spec.nominal_rolling_radius_m << " m, normal "
-    << (spec.normal == NormalForceKind::hertz ? "hertz" : "prescribed") << ", creep law "
+    << normal_force_name(spec.normal) << ", creep law "
     << creep_law_description(c.creep_law);
   return s.str();
 }

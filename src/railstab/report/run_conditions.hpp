@@ -15,7 +15,9 @@ namespace railstab {
 
 struct RunConditions {
   std::string scene_path;
-  std::string scene_sha256;  // empty when the file cannot be read (e.g. a scene from text)
+  // Model::source_sha256: the scene file's hash, taken from the bytes read
+  // when the scene was read; empty for a scene from text or built in code.
+  std::string scene_sha256;
   std::string version;
   double reference_arc_length_m = 0.0;
   // Every body's track frame on straight, uncanted track at t = 0.

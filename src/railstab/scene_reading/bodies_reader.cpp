@@ -1,5 +1,6 @@
 #include <railstab/scene_reading/bodies_reader.hpp>
 
+#include <railstab/bodies/body.hpp>
 #include <railstab/core/coordinates.hpp>
 
 #include <optional>
@@ -8,7 +9,8 @@ namespace railstab::scene_reading {
 
 namespace {
 
-const Choices<bool> kBodyIsWheelset = {{"wheelset", true}, {"rigid_body", false}};
+// The body kinds' own names (bodies/body.hpp kName).
+const Choices<bool> kBodyIsWheelset = {{WheelsetKind::kName, true}, {RigidBodyKind::kName, false}};
 
 // free = ["y", "yaw"] -> which of the six coordinates move.
 std::array<bool, 6> read_free_coordinates(const TableReader& body) {

@@ -10,16 +10,9 @@ namespace railstab::scene_reading {
 
 namespace {
 
-const Choices<ContactGeometryKind> kContactGeometries = {
-    {"knife_edge_cone", ContactGeometryKind::knife_edge_cone},
-    {"linear_conicity", ContactGeometryKind::linear_conicity},
-    {"profiles", ContactGeometryKind::profiles}};
-const Choices<NormalForceKind> kNormalForces = {{"hertz", NormalForceKind::hertz},
-                                                {"prescribed", NormalForceKind::prescribed}};
-const Choices<TangentialForceKind> kTangentialForces = {
-    {"kalker_hertz", TangentialForceKind::kalker_hertz},
-    {"constant", TangentialForceKind::constant},
-    {"none", TangentialForceKind::none}};
+const Choices<ContactGeometryKind> kContactGeometries = choices_of(kContactGeometryNames);
+const Choices<NormalForceKind> kNormalForces = choices_of(kNormalForceNames);
+const Choices<TangentialForceKind> kTangentialForces = choices_of(kTangentialForceNames);
 
 // A number with a default that becomes required for one choice of model
 // (e.g. prescribed_wheel_load_N when normal = "prescribed").

@@ -7,11 +7,12 @@
 namespace railstab::scene_reading {
 
 namespace {
+// The creep_law names are the laws' own (kName).
 enum class CreepLawChoice { linear_kalker, shen_hedrick_elkins, polach };
 const Choices<CreepLawChoice> kCreepLaws = {
-    {"linear_kalker", CreepLawChoice::linear_kalker},
-    {"shen_hedrick_elkins", CreepLawChoice::shen_hedrick_elkins},
-    {"polach", CreepLawChoice::polach}};
+    {LinearKalkerCreep<double>::kName, CreepLawChoice::linear_kalker},
+    {ShenHedrickElkinsCreep<double>::kName, CreepLawChoice::shen_hedrick_elkins},
+    {PolachCreep<double>::kName, CreepLawChoice::polach}};
 const std::array<std::string_view, 5> kPolachKeys = {
     "polach_limit_friction_ratio", "polach_friction_decrease_s_per_m",
     "polach_adhesion_reduction_factor", "polach_slip_reduction_factor", ""};

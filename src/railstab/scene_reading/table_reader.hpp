@@ -5,6 +5,7 @@
 // string 'heavy'"). A table declares the keys it may hold, so a misspelt key
 // is reported as such (with the key the user most likely meant) instead of
 // as a missing one. Internal to scene_reading/; the section readers use it.
+#include <railstab/core/name_table.hpp>
 #include <railstab/scene_reading/scene_messages.hpp>
 
 #include <toml++/toml.h>
@@ -23,6 +24,11 @@ namespace railstab::scene_reading {
 // Scene-file spellings of an enumeration, e.g. {"tangent", TrackSegmentKind::tangent}.
 template <class Value>
 using Choices = std::vector<std::pair<std::string_view, Value>>;
+// The choices of an enumeration's name table (core/name_table.hpp).
+template <class Value, size_t N>
+Choices<Value> choices_of(const NameTable<Value, N>& names) {
+  return Choices<Value>(names.begin(), names.end());
+}
 
 // The "got ..." of a missing key.
 inline constexpr const char* kMissingKey = "nothing (the key is missing)";
@@ -96,10 +102,6 @@ class TableReader {
 
   // An array of exactly three numbers, e.g. [0.0, 1.0, -0.6075].
   Eigen::Vector3d vector3(std::string_view key, std::string_view unit) const;
-  Eigen::Vector3d vector3_or(std::string_view key, std::string_view unit,
-                             const Eigen::Vector3d& fallback) const {
-    return has(key) ? vector3(key, unit) : fallback;
-  }
 
   template <class Value>
   Value choice(std::string_view key, const Choices<Value>& choices) const {

@@ -6,9 +6,7 @@ namespace railstab::scene_reading {
 
 namespace {
 
-const Choices<TrackSegmentKind> kSegmentKinds = {{"tangent", TrackSegmentKind::tangent},
-                                                 {"clothoid", TrackSegmentKind::clothoid},
-                                                 {"arc", TrackSegmentKind::arc}};
+const Choices<TrackSegmentKind> kSegmentKinds = choices_of(kTrackSegmentKindNames);
 const Choices<double> kTurnSigns = {{"left", +1.0}, {"right", -1.0}};
 
 double read_clothoid_end_curvature(const TableReader& segment) {

@@ -5,7 +5,7 @@
 // end_cant_m (default: the cant the segment starts with); a clothoid takes
 // end_radius_m + turn, or end_curvature_per_m; an arc keeps the curvature
 // it starts with.
-#include <railstab/scene/track_spec.hpp>
+#include <railstab/track/track_spec.hpp>
 #include <railstab/scene_reading/table_reader.hpp>
 
 namespace railstab::scene_reading {

@@ -13,10 +13,6 @@ std::string coordinate_word(int coordinate) {
   return words[coordinate];
 }
 
-double neutral_threshold(const Eigen::MatrixXd& A) {
-  return 1e-9 * std::max(1.0, A.norm());
-}
-
 std::vector<int> conjugate_partners(const std::vector<ModeReport>& modes) {
   std::vector<int> partner(modes.size(), -1);
   for (size_t i = 0; i < modes.size(); ++i) {

@@ -56,10 +56,6 @@ std::vector<ModeReport> describe_modes(const Model& model, const LinearModel& li
 std::vector<ModeShape> describe_mode_shapes(const Model& model, const LinearModel& lin,
                                             const std::vector<EigenPair>& pairs);
 
-// Threshold below which |lambda| counts as zero: round-off of the
-// eigen-solver relative to the matrix norm.
-double neutral_threshold(const Eigen::MatrixXd& A);
-
 // Index of the least stable non-neutral mode at or below max_frequency_hz
 // (largest real part; among equal real parts the oscillatory one), or -1.
 int least_stable_mode(const std::vector<ModeReport>& modes, double max_frequency_hz);

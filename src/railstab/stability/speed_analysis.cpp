@@ -1,6 +1,6 @@
 #include <railstab/stability/speed_analysis.hpp>
 
-#include <railstab/contact/wheel_forces.hpp>
+#include <railstab/model/wheel_forces.hpp>
 #include <railstab/eigen/band_eigen.hpp>
 #include <railstab/equilibrium/speed_continuation.hpp>
 #include <railstab/linear/jacobian.hpp>
@@ -200,7 +200,7 @@ StabilityPoint SpeedStability::evaluate(double speed_m_per_s, bool sparse,
     }
   }
   // Real profiles guide the wheelset by its flange: the limit is flange
-  // climbing, Y/Q against Nadal's limit (contact/wheel_forces.hpp).
+  // climbing, Y/Q against Nadal's limit (model/wheel_forces.hpp).
   if (has_profiles && p.validity_warning.empty())
     if (const auto w = wheel_beyond_nadal_limit(
             wheel_forces(model, speed_m_per_s, t, p.equilibrium.state)))

@@ -72,7 +72,7 @@ struct StabilityPoint {
   // Non-empty when a wheelset's steady lateral shift exceeds its flange
   // clearance (the flangeless contact model is outside its validity there)
   // or, on real profiles, a wheel's Y/Q exceeds Nadal's limit (flange
-  // climbing: contact/wheel_forces.hpp).
+  // climbing: model/wheel_forces.hpp).
   std::string validity_warning;
   // Unstable non-neutral modes above the hunting band (indices into modes).
   std::vector<int> unstable_above_band;

@@ -5,7 +5,6 @@
 
 #include <toml++/toml.h>
 
-#include <algorithm>
 #include <map>
 #include <sstream>
 #include <stdexcept>
@@ -154,13 +153,10 @@ StudyRecord read_study_record(const std::string& path) {
   d.analysis.to_m_per_s = number_at(s, "to_m_per_s", path, "study.");
   d.analysis.grid_step_m_per_s = number_at(s, "grid_step_m_per_s", path, "study.");
   d.analysis.solver = text_at(s, "eigen_solver", path, "study.");
-  {
-    const std::vector<std::string> names = eigen_solver_names();
-    if (std::find(names.begin(), names.end(), d.analysis.solver) == names.end()) {
-      std::string expected;
-      for (const std::string& n : names) expected += (expected.empty() ? "" : ", ") + n;
-      fail(path, "study.eigen_solver", "one of " + expected);
-    }
+  try {
+    (void)eigen_solver_from_name(d.analysis.solver);  // the names and the message are its own
+  } catch (const std::invalid_argument& e) {
+    throw std::runtime_error(path + ": study.eigen_solver: " + e.what());
   }
   d.analysis.hunting_band_hz = number_at(s, "hunting_band_Hz", path, "study.");
   for (const toml::node& n : array_at(s, "set", path, "study.")) {

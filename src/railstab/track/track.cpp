@@ -168,19 +168,10 @@ Eigen::Vector3d angular_acceleration_in_T(const FrameTrig& t, const AngleRates& 
 
 // ---- Validation -------------------------------------------------------------------
 
-const char* kind_name(TrackSegmentKind kind) {
-  switch (kind) {
-    case TrackSegmentKind::tangent: return "tangent";
-    case TrackSegmentKind::clothoid: return "clothoid";
-    case TrackSegmentKind::arc: return "arc";
-  }
-  return "unknown";
-}
-
 [[noreturn]] void reject(const std::string& what) { throw std::invalid_argument("track: " + what); }
 
 std::string segment_label(int index, TrackSegmentKind kind) {
-  return "segment " + std::to_string(index) + " (" + kind_name(kind) + ")";
+  return "segment " + std::to_string(index) + " (" + std::string(track_segment_kind_name(kind)) + ")";
 }
 
 std::string number(double value) {

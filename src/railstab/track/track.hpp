@@ -7,7 +7,7 @@
 // R_WT = A = Az(heading) Ay(grade) Ax(roll). The seed track has no grade
 // (grade = 0) but the formulas keep it. Roll = -asin(cant / D) (cant > 0 raises
 // the right rail, see scene/scene_spec.hpp).
-#include <railstab/scene/track_spec.hpp>
+#include <railstab/track/track_spec.hpp>
 
 #include <Eigen/Dense>
 

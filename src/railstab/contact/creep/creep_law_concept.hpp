@@ -1,6 +1,6 @@
 #pragma once
 // What a creep law must provide, checked by the compiler for every law in the
-// creep-law variant (scene/scene_spec.hpp CreepLawTpl): a law that lacks a
+// creep-law variant (creep_law.hpp CreepLawTpl): a law that lacks a
 // member fails to compile there, with the member named.
 //   kName                 its creep_law name in scene files and reports
 //   validate()            std::invalid_argument naming the bad field
@@ -36,11 +36,6 @@ template <class L> constexpr bool assert_creep_law() {
 }
 template <class... L> constexpr bool assert_creep_laws(std::type_identity<std::variant<L...>>) {
   return (assert_creep_law<L>() && ...);
-}
-
-// The creep_law name of the law a variant holds.
-template <class... L> const char* creep_law_name(const std::variant<L...>& law) {
-  return std::visit([](const auto& l) { return std::decay_t<decltype(l)>::kName; }, law);
 }
 
 }  // namespace railstab

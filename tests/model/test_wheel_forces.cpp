@@ -1,4 +1,4 @@
-// Wheel forces Y, Q and Y/Q (contact/wheel_forces.hpp) and Nadal's limit.
+// Wheel forces Y, Q and Y/Q (model/wheel_forces.hpp) and Nadal's limit.
 // - Nadal's formula against hand-computed values and its mu -> 0 limit
 //   (tan beta);
 // - the selection of the wheel beyond its limit;
@@ -7,7 +7,7 @@
 //   alike (mirror symmetry, 1e-6), both pushing their rails outwards (Y > 0:
 //   the coned treads' gauge-spreading force); the knife-edge vehicle has no
 //   flange and so no limit.
-#include <railstab/contact/wheel_forces.hpp>
+#include <railstab/model/wheel_forces.hpp>
 #include <railstab/contact_geometry/profile_contact_geometry.hpp>
 #include <railstab/equilibrium/equilibrium.hpp>
 #include <railstab/scene_reading/load_scene.hpp>

@@ -1,4 +1,4 @@
-#include <railstab/contact/wheel_forces.hpp>
+#include <railstab/model/wheel_forces.hpp>
 
 #include <railstab/contact_geometry/profile_contact_geometry.hpp>
 #include <railstab/model/equations_of_motion.hpp>

@@ -1,11 +1,23 @@
 #pragma once
-// The track as a scene describes it (conventions: scene/scene_spec.hpp).
+// The track as a scene describes it ([track], [[track.segments]];
+// conventions: scene/scene_spec.hpp).
+#include <railstab/core/name_table.hpp>
+
+#include <string_view>
 #include <vector>
 
 namespace railstab {
 
 // --- Track --------------------------------------------------------------------
 enum class TrackSegmentKind { tangent, clothoid, arc };
+// A segment's `type` in scene files and messages.
+inline constexpr NameTable<TrackSegmentKind, 3> kTrackSegmentKindNames = {{
+    {"tangent", TrackSegmentKind::tangent},
+    {"clothoid", TrackSegmentKind::clothoid},
+    {"arc", TrackSegmentKind::arc}}};
+constexpr std::string_view track_segment_kind_name(TrackSegmentKind kind) {
+  return name_in(kTrackSegmentKindNames, kind);
+}
 
 // A segment starts where the previous one ends (position, heading, curvature,
 // cant), so continuity holds by construction. Curvature varies linearly over a
