@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "cli/run_cli.hpp"
+#include "support/test_files.hpp"
 
 #include <railstab/nonlinear/hopf_assessment.hpp>
 #include <railstab/setup/prepare_scene.hpp>
@@ -22,13 +23,6 @@ using namespace railstab;
 
 namespace {
 
-std::string read_file(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 // The text after "key": up to the next comma or newline.
 std::string json_value(const std::string& json, const std::string& key) {
   const std::regex re("\"" + key + "\": ([^,\\n]*)");
@@ -37,21 +31,14 @@ std::string json_value(const std::string& json, const std::string& key) {
   return m[1].str();
 }
 
-fs::path fresh_folder(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("railstab_cli_hopf_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
 }  // namespace
 
 TEST(CliHopf, CriticalSpeedJsonCarriesTheLibrarysFirstLyapunovCoefficient) {
   const std::string scene = std::string(RAILSTAB_CASES_DIR) + "/thesis_bogie_tangent.toml";
-  const fs::path dir = fresh_folder("knife_edge");
+  const fs::path dir = test::fresh_dir("cli_hopf", "knife_edge");
   const test::CliRun run = test::run_railstab({"critical-speed", scene, "--no-plots", "--out", "out"}, dir);
   ASSERT_EQ(run.exit_code, 0) << run.output;
-  const std::string json = read_file(dir / "out" / "thesis_bogie_tangent_critical_speed.json");
+  const std::string json = test::read_text(dir / "out" / "thesis_bogie_tangent_critical_speed.json");
   // The library on the same search (the command's defaults: 5..150 m/s, grid 2.5 m/s).
   const PreparedScene s = prepare_scene(scene, {});
   CriticalSpeedOptions opt;
@@ -71,7 +58,7 @@ TEST(CliHopf, CriticalSpeedJsonCarriesTheLibrarysFirstLyapunovCoefficient) {
   EXPECT_NEAR(coefficient, h.amplitude_coefficient_m_per_sqrt_m_per_s,
               1e-10 * h.amplitude_coefficient_m_per_sqrt_m_per_s);
   EXPECT_GT(coefficient, 0.0);
-  const std::string md = read_file(dir / "out" / "thesis_bogie_tangent_critical_speed.md");
+  const std::string md = test::read_text(dir / "out" / "thesis_bogie_tangent_critical_speed.md");
   EXPECT_NE(md.find("| Hopf bifurcation | " + hopf_kind_name(h.result.kind)), std::string::npos);
   EXPECT_NE(run.output.find("Hopf bifurcation: " + hopf_kind_name(h.result.kind)), std::string::npos)
       << run.output;
@@ -79,10 +66,10 @@ TEST(CliHopf, CriticalSpeedJsonCarriesTheLibrarysFirstLyapunovCoefficient) {
 
 TEST(CliHopf, ProfileContactLeavesTheCoefficientNullAndSaysWhy) {
   const std::string scene = std::string(RAILSTAB_CASES_DIR) + "/thesis_bogie_s1002_tangent.toml";
-  const fs::path dir = fresh_folder("profiles");
+  const fs::path dir = test::fresh_dir("cli_hopf", "profiles");
   const test::CliRun run = test::run_railstab({"critical-speed", scene, "--no-plots", "--out", "out"}, dir);
   ASSERT_EQ(run.exit_code, 0) << run.output;
-  const std::string json = read_file(dir / "out" / "thesis_bogie_s1002_tangent_critical_speed.json");
+  const std::string json = test::read_text(dir / "out" / "thesis_bogie_s1002_tangent_critical_speed.json");
   ASSERT_NE(json_value(json, "critical_speed_m_per_s"), "null");
   EXPECT_EQ(json_value(json, "first_lyapunov_coefficient"), "null");
   EXPECT_EQ(json_value(json, "hopf_kind"), "null");

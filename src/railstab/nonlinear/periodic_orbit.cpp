@@ -87,7 +87,8 @@ PeriodicOrbit solve_periodic_orbit(const FlowSystem& system, const OrbitCoordina
   flow_options.samples = options.samples_per_period;
   Eigen::VectorXd range = Eigen::VectorXd::Zero(n);
   double last_step_norm = std::numeric_limits<double>::infinity();
-  for (int iteration = 1; iteration <= options.max_newton_iterations; ++iteration) {
+  // One flow over the current period; its work added to the orbit's.
+  auto shoot = [&] {
     FlowResult flow;
     try {
       flow = integrate_flow(system, x0, V, T, flow_options);
@@ -96,6 +97,10 @@ PeriodicOrbit solve_periodic_orbit(const FlowSystem& system, const OrbitCoordina
     }
     orbit.integration_steps += flow.steps;
     orbit.jacobian_evaluations += flow.jacobian_evaluations;
+    return flow;
+  };
+  for (int iteration = 1; iteration <= options.max_newton_iterations; ++iteration) {
+    FlowResult flow = shoot();
     range.setZero();
     {
       Eigen::VectorXd lo = flow.samples.front(), hi = lo;
@@ -144,13 +149,7 @@ PeriodicOrbit solve_periodic_orbit(const FlowSystem& system, const OrbitCoordina
         throw ShootingFailure("periodic orbit: Newton diverges at V = " + std::to_string(V) +
                               " m/s");
       // The final flow at the corrected point: multipliers, samples, residual.
-      try {
-        flow = integrate_flow(system, x0, V, T, flow_options);
-      } catch (const std::exception& e) {
-        throw ShootingFailure(std::string("periodic orbit: ") + e.what());
-      }
-      orbit.integration_steps += flow.steps;
-      orbit.jacobian_evaluations += flow.jacobian_evaluations;
+      flow = shoot();
       orbit.speed_m_per_s = V;
       orbit.period_s = T;
       orbit.start = x0;
