@@ -180,7 +180,7 @@ PeriodicOrbit solve_periodic_orbit(const FlowSystem& system, const OrbitCoordina
 OrbitGuess orbit_guess_from_samples(const std::vector<double>& times_s,
                                     const std::vector<Eigen::VectorXd>& states,
                                     const OrbitCoordinates& coords) {
-  const int is = coords.section_state, ia = coords.amplitude_state;
+  const int is = coords.section_state;
   // Crossings of x[is] from + to - (a maximum of x[ia] when x[is] is its rate).
   std::vector<std::pair<double, Eigen::VectorXd>> crossings;
   for (size_t k = 1; k < states.size(); ++k) {
@@ -191,7 +191,6 @@ OrbitGuess orbit_guess_from_samples(const std::vector<double>& times_s,
                              states[k - 1] + s * (states[k] - states[k - 1]));
     }
   }
-  (void)ia;
   if (crossings.size() < 2)
     throw std::runtime_error(
         "periodic orbit: the run holds fewer than two periods of the leading wheelset's lateral "
