@@ -2,6 +2,7 @@
 
 #include <railstab/equilibrium/speed_continuation.hpp>
 #include <railstab/integrate/integrator.hpp>
+#include <railstab/nonlinear/hopf_assessment.hpp>
 
 #include <cmath>
 #include <ctime>
@@ -10,12 +11,6 @@
 namespace railstab {
 
 namespace {
-
-bool has_profile_contact(const Model& model) {
-  for (const ModelContact& c : model.contacts)
-    if (c.spec.geometry == ContactGeometryKind::profiles) return true;
-  return false;
-}
 
 ContinuationOptions continuation_for(const BifurcationOptions& o, const std::string& origin) {
   ContinuationOptions c = o.continuation;

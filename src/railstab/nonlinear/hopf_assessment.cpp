@@ -6,6 +6,12 @@
 
 namespace railstab {
 
+bool has_profile_contact(const Model& model) {
+  for (const ModelContact& c : model.contacts)
+    if (c.spec.geometry == ContactGeometryKind::profiles) return true;
+  return false;
+}
+
 HopfAssessment assess_hopf(const Model& model, const CriticalSpeedResult& r) {
   HopfAssessment a;
   if (!r.critical_speed_found) {
@@ -17,14 +23,13 @@ HopfAssessment assess_hopf(const Model& model, const CriticalSpeedResult& r) {
                             "axis (no Hopf point)";
     return a;
   }
-  for (const ModelContact& c : model.contacts)
-    if (c.spec.geometry == ContactGeometryKind::profiles) {
-      a.not_computed_reason =
-          "profile contact: the contact tables are only C1 (interpolated between table points), "
-          "so the third derivatives would be the interpolation's; the kind follows from the "
-          "branch of periodic orbits instead (docs/nonlinear.md)";
-      return a;
-    }
+  if (has_profile_contact(model)) {
+    a.not_computed_reason =
+        "profile contact: the contact tables are only C1 (interpolated between table points), "
+        "so the third derivatives would be the interpolation's; the kind follows from the "
+        "branch of periodic orbits instead (docs/nonlinear.md)";
+    return a;
+  }
   try {
     a.result = hopf_criticality(model, r);
     a.computed = true;

@@ -24,6 +24,9 @@ struct HopfAssessment {
   double amplitude_coefficient_m_per_sqrt_m_per_s = 0.0;
 };
 
+// True when a contact of the model uses profile tables (C1 geometry).
+bool has_profile_contact(const Model& model);
+
 // Never throws for a model it cannot assess: the reason says why.
 HopfAssessment assess_hopf(const Model& model, const CriticalSpeedResult& result);
 
