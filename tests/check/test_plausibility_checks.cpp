@@ -118,8 +118,12 @@ TEST(PlausibilityProfile, WheelRotatedBy180DegreesIsAnErrorNamingTheFile) {
   EXPECT_NE(e.find("s1002_rotated.txt"), std::string::npos) << e;
   EXPECT_NE(e.find("flange points up"), std::string::npos) << e;
   EXPECT_NE(e.find("rotated by 180"), std::string::npos) << e;
-  // The flange tip of S1002 is 28.0 mm below its tape circle: rotated, 28.0 mm above.
-  EXPECT_NE(e.find("0.028"), std::string::npos) << e;
+  // The flange tip of S1002 (its lowest point, 28.0 mm below the tape
+  // circle): rotated, the highest point, at the mirrored y.
+  const size_t tip = size_t(std::min_element(s1002.z_m.begin(), s1002.z_m.end()) - s1002.z_m.begin());
+  EXPECT_NE(e.find("rises to z = " + printed(-s1002.z_m[tip]) + " m at y = " + printed(-s1002.y_m[tip])),
+            std::string::npos)
+      << e;
   // `railstab check` and an analysis stop with it, exit 1, nothing written.
   for (const char* command : {"check", "critical-speed"}) {
     const auto run = railstab::test::run_railstab(

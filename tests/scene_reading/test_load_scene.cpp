@@ -380,7 +380,7 @@ TEST(SceneLoader, ValidateSceneCatchesCommandLineOverride) {
     ADD_FAILURE() << "expected a SceneError";
   } catch (const SceneError& error) {
     EXPECT_NE(
-        std::string(error.what()).find("cases/minimal.toml: scene.speed_m_per_s: expected > 0"),
+        std::string(error.what()).find("cases/minimal.toml: scene.speed_m_per_s: expected at least kMinimumCreepSpeed_m_per_s = 0.1 m/s"),
         std::string::npos)
         << error.what();
   }
