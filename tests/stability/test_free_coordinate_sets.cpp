@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <ostream>
 #include <regex>
 #include <string>
 #include <vector>
@@ -35,6 +36,9 @@ struct FreeSet {
   const char* carbody;
   int internal_only_modes;  // expected eigenvalues at -k_s/c (all held: 4)
 };
+
+// GoogleTest names a parameter by its bytes otherwise.
+void PrintTo(const FreeSet& set, std::ostream* out) { *out << set.name; }
 
 // coach_tangent with `free` of every body replaced.
 fs::path coach_with_free(const fs::path& dir, const FreeSet& set) {
