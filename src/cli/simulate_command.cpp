@@ -1,5 +1,7 @@
 #include "cli/simulate_command.hpp"
 
+#include <railstab/check/run_check.hpp>
+
 #include "cli/scene_command.hpp"
 #include "cli/numeric_flags.hpp"
 #include "cli/set_flag.hpp"
@@ -69,6 +71,7 @@ void run_simulate(const SimulateArgs& args) {
   if (!traj.events.empty())
     std::cout << traj.events.size() << " wheel-rail contact losses/regains, first: "
               << traj.events.front().description << "\n";
+  for (const ModelWarning& w : check_run(model, traj)) std::cout << "warning: " << w.message << "\n";
   std::optional<ErrorEstimate> error;
   if (args.estimate_error) {
     std::cerr << "error estimate: the same run at 100x tighter tolerances\n";

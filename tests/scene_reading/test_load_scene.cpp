@@ -318,7 +318,7 @@ const std::vector<SceneMistake> kSceneMistakes = {
     {"NegativeStiffness", "stiffness_N_per_m = [1.0, 2.0, 3.0]", "stiffness_N_per_m = [1.0, -2.0, 3.0]",
      {"elements[1].stiffness_N_per_m[1]", "expected a stiffness in [0, 1e+11] N/m", "got -2"}},
     {"ZeroSpeedWithCreepForces", "speed_m_per_s = 20.0", "speed_m_per_s = 0.0",
-     {"scene.speed_m_per_s", "expected > 0 when creep forces are on", "creepages are divided by the speed", "got 0"}},
+     {"scene.speed_m_per_s", "expected at least kMinimumCreepSpeed_m_per_s = 0.1 m/s when creep forces are on", "creepages are divided by the speed", "got 0"}},
     {"UnknownContact", "contact = \"cone\"\ninitial_offset", "contact = \"cylinder\"\ninitial_offset",
      {"bodies[0].contact", "unknown contact 'cylinder' (contacts: cone)"}},
     {"ReservedBodyName", "name = \"bogie1\"", "name = \"track\"",
@@ -326,7 +326,7 @@ const std::vector<SceneMistake> kSceneMistakes = {
     {"DuplicateBodyName", "name = \"wheelset2\"", "name = \"wheelset1\"",
      {"bodies[1].name", "expected a unique body name", "already the name of bodies[0]"}},
     {"ConeAngleOutOfRange", "cone_angle_rad = 0.12", "cone_angle_rad = 0.6",
-     {"contacts.cone.cone_angle_rad", "expected a cone angle in (0, 0.5) rad", "got 0.6"}},
+     {"contacts.cone.cone_angle_rad", "expected a knife-edge cone angle in [0.01, 0.4] rad", "got 0.6"}},
     {"PoissonRatioOutOfRange", "cone_angle_rad = 0.12", "cone_angle_rad = 0.12\nwheel_poisson_ratio = 0.5",
      {"contacts.cone.wheel_poisson_ratio", "expected a Poisson ratio in [0, 0.5)"}},
     {"CantMustBeLessThanRailDistance", "end_cant_m = 0.05", "end_cant_m = 1.6",
@@ -380,7 +380,7 @@ TEST(SceneLoader, ValidateSceneCatchesCommandLineOverride) {
     ADD_FAILURE() << "expected a SceneError";
   } catch (const SceneError& error) {
     EXPECT_NE(
-        std::string(error.what()).find("cases/minimal.toml: scene.speed_m_per_s: expected > 0"),
+        std::string(error.what()).find("cases/minimal.toml: scene.speed_m_per_s: expected at least kMinimumCreepSpeed_m_per_s = 0.1 m/s"),
         std::string::npos)
         << error.what();
   }

@@ -1,5 +1,6 @@
 #include <railstab/check/model_check.hpp>
 
+#include <railstab/core/dual.hpp>
 #include <railstab/frames/rotations.hpp>
 #include <railstab/linear/jacobian.hpp>
 #include <railstab/model/equations_of_motion.hpp>
@@ -155,6 +156,44 @@ template <class E> void add_deflections(const E& e, ModelCheckReport& r) {
   e.for_each_preloaded_axis(add);
 }
 
+// A damper in series with a spring (series_spring_damper): its corner
+// frequency f_c = k_s / (2 pi c) against the band of the modes that matter
+// (ModelCheckLimits). c is the damper's slope at zero velocity, the damping
+// the linearisation sees (a table's slope at 0: 9000 N / 0.02 m/s for the
+// coach's yaw dampers).
+template <class E>
+void check_series_damper(const E& e, const ModelCheckLimits& L, ModelCheckReport& r) {
+  const double k = value_of(e.series_stiffness_N_per_m);
+  // dF/dv at v = 0 by forward-mode AD: exact, as the linearisation sees it
+  // (slope_at_zero's central difference is off by ~1 N s/m on a PCHIP table).
+  const double c = e.damper.force(Dual<double>(0.0, 1.0)).d;
+  if (!(k > 0.0) || !(c > 0.0)) return;
+  const double f_c = k / (2.0 * kPi * c);
+  const double low = L.series_damper_band_min_hz / L.series_damper_corner_factor_below;
+  const double high = L.series_damper_band_max_hz * L.series_damper_corner_factor_above;
+  if (f_c >= low && f_c <= high) return;
+  const bool below = f_c < low;
+  const double f_band = below ? L.series_damper_band_min_hz : L.series_damper_band_max_hz;
+  const double kept = 1.0 / (1.0 + (f_band / f_c) * (f_band / f_c));  // c_eff / c at f_band
+  std::ostringstream msg;
+  msg << e.ends.name << " (series_spring_damper): corner frequency k_s / (2 pi c) = " << k
+      << " N/m / (2 pi x " << c << " N s/m) = " << f_c << " Hz is "
+      << (below ? "below" : "above") << " the band of body and hunting modes ["
+      << L.series_damper_band_min_hz << ", " << L.series_damper_band_max_hz << "] Hz by more than "
+      << (below ? L.series_damper_corner_factor_below : L.series_damper_corner_factor_above)
+      << " x; ";
+  if (below)
+    msg << "the damper keeps " << kept * 100.0 << " % of its damping at " << f_band
+        << " Hz and does nothing in the band: series_stiffness_N_per_m in MN/m or kN/m where "
+           "N/m is expected? (yaw-damper mounts are ~5-20 MN/m)";
+  else
+    msg << "the series spring is rigid for every modelled motion (a plain damper with a time "
+           "constant c / k_s = "
+        << c / k << " s): series_stiffness_N_per_m in N/mm where N/m is expected?";
+  warn(r, below ? "series_damper_corner_below_band" : "series_damper_corner_above_band",
+       e.ends.name, msg.str());
+}
+
 void check_elements(const Model& model, const ModelCheckLimits& L, ModelCheckReport& r) {
   for (const ElementTpl<double>& element : model.elements) {
     std::visit(
@@ -170,6 +209,7 @@ void check_elements(const Model& model, const ModelCheckLimits& L, ModelCheckRep
                   << " m from its body: it looks like millimetres";
               warn(r, "unit_looks_wrong", ends.name, msg.str());
             }
+          if constexpr (requires { e.series_stiffness_N_per_m; }) check_series_damper(e, L, r);
           // Elements acting on the displacement of two points (free vector d0).
           if constexpr (requires { e.free_vector_m; }) {
             const double apart = e.free_vector_m.norm();
@@ -206,6 +246,107 @@ void static_checks(const SceneSpec& spec, const Model& model, const ModelCheckLi
   check_elements(model, L, r);
 }
 
+// --- equilibrium: axle loads, wheel-load balance, lateral shift ----------------------------
+// Wheel-load balance of one axle: larger over smaller wheel load.
+void check_wheel_load_ratio(const AxleLoad& a, const ModelCheckLimits& L, ModelCheckReport& r) {
+  const double larger = std::max(a.left_N, a.right_N), smaller = std::min(a.left_N, a.right_N);
+  if (!(larger > 0.0)) return;  // an unloaded axle is the axle-load warning's
+  if (smaller > 0.0 && larger / smaller <= L.wheel_load_ratio_max) return;
+  std::ostringstream msg;
+  msg << a.wheelset << ": wheel loads left " << a.left_N / 1e3 << " kN, right "
+      << a.right_N / 1e3 << " kN in the steady state, ratio ";
+  if (smaller > 0.0) msg << larger / smaller;
+  else msg << "infinite (a wheel unloaded)";
+  msg << " beyond wheel_load_ratio_max = " << L.wheel_load_ratio_max
+      << " (dQ/Q0 = " << (larger - smaller) / (larger + smaller)
+      << "): a cant on the wrong rail, a curve too tight for the speed, or a body's centre of "
+         "mass off the centre line?";
+  warn(r, "wheel_loads_unbalanced", a.wheelset, msg.str());
+}
+
+// A flangeless contact (knife-edge cone, linear conicity) has no flange: a
+// steady lateral shift beyond its flange_clearance_m is a state the real
+// wheelset cannot reach (it would be flanging), so results from it describe
+// no vehicle.
+void check_lateral_shift(const Model& model, int b, double y_m, ModelCheckReport& r) {
+  const ContactSpec& c = model.contacts[size_t(model.bodies[size_t(b)].wheelset()->contact)].spec;
+  if (c.geometry == ContactGeometryKind::profiles || !(c.flange_clearance_m > 0.0)) return;
+  if (std::abs(y_m) <= c.flange_clearance_m) return;
+  std::ostringstream msg;
+  msg << model.bodies[size_t(b)].name << ": steady lateral shift " << y_m * 1e3
+      << " mm is beyond contacts." << c.name << ".flange_clearance_m = "
+      << c.flange_clearance_m * 1e3 << " mm; the " << contact_geometry_name(c.geometry)
+      << " contact has no flange, a real wheelset would be flanging: the results describe no "
+         "vehicle (a curve too tight or a cant deficiency too large for this model?)";
+  warn(r, "lateral_shift_beyond_flange_clearance", model.bodies[size_t(b)].name, msg.str());
+}
+
+// Cant against the curve at every wheelset's track position (t = 0):
+// direction (cant > 0 raises the right rail, the outer rail of a left-hand
+// curve kappa > 0), deficiency I = D V^2 |kappa| / g - cant_outer and excess
+// E = -I against the line limits (ModelCheckLimits).
+void check_cant(const Model& model, double V, const ModelCheckLimits& L, ModelCheckReport& r) {
+  const double g = model.gravity_m_per_s2;
+  const double D = model.track.spec().rail_contact_distance_m;
+  struct Worst {
+    double value = 0.0;
+    std::string wheelsets;
+    TrackGeometryPoint at;
+  } inner, deficiency, excess;
+  auto note = [](Worst& w, double value, const std::string& name, const TrackGeometryPoint& p) {
+    if (w.wheelsets.empty() || value > w.value) w.value = value, w.at = p;
+    w.wheelsets += (w.wheelsets.empty() ? "" : ", ") + name;
+  };
+  for (size_t b = 0; b < model.bodies.size(); ++b) {
+    if (!model.bodies[b].wheelset()) continue;
+    const TrackGeometryPoint p = model.track.geometry_at(model.arc_length_of(int(b), 0.0, V));
+    const double kappa = p.curvature_per_m, cant = p.cant_m;
+    const std::string& name = model.bodies[b].name;
+    // Cant on the outer rail (> 0) or the inner one (< 0); on tangent track
+    // any cant is excess.
+    const double cant_outer = kappa > 0.0 ? cant : kappa < 0.0 ? -cant : -std::abs(cant);
+    if (kappa != 0.0 && cant_outer < -L.cant_direction_min_m) note(inner, -cant_outer, name, p);
+    if (!(g > 0.0)) continue;
+    const double I = D * V * V * std::abs(kappa) / g - cant_outer;
+    if (I > L.cant_deficiency_max_m) note(deficiency, I, name, p);
+    if (-I > L.cant_excess_max_m) note(excess, -I, name, p);
+  }
+  auto where = [](const TrackGeometryPoint& p) {
+    std::ostringstream s;
+    s << "at s = " << p.s_m << " m: curvature " << p.curvature_per_m << " 1/m";
+    if (p.curvature_per_m != 0.0) s << " (R = " << 1.0 / std::abs(p.curvature_per_m) << " m "
+                                    << (p.curvature_per_m > 0.0 ? "left" : "right") << ")";
+    s << ", cant " << p.cant_m * 1e3 << " mm";
+    return s.str();
+  };
+  if (!inner.wheelsets.empty()) {
+    std::ostringstream msg;
+    msg << "the cant raises the inner rail under " << inner.wheelsets << " (" << where(inner.at)
+        << "): cant > 0 raises the right rail, the outer rail of a left-hand curve (curvature "
+           "> 0); give the cant the curvature's sign (track.segments[i].end_cant_m), unless "
+           "the line really has adverse cant (a turnout's diverging track)";
+    warn(r, "cant_on_inner_rail", "track", msg.str());
+  }
+  if (!deficiency.wheelsets.empty()) {
+    std::ostringstream msg;
+    msg << "cant deficiency " << deficiency.value * 1e3 << " mm at " << V << " m/s under "
+        << deficiency.wheelsets << " (" << where(deficiency.at)
+        << "; I = D V^2 |curvature| / g - cant, D = " << D << " m) is beyond "
+        << "cant_deficiency_max_m = " << L.cant_deficiency_max_m * 1e3
+        << " mm (EN 13803-1 maximum for conventional vehicles): no line runs this";
+    warn(r, "cant_deficiency_beyond_limit", "track", msg.str());
+  }
+  if (!excess.wheelsets.empty()) {
+    std::ostringstream msg;
+    msg << "cant excess " << excess.value * 1e3 << " mm at " << V << " m/s under "
+        << excess.wheelsets << " (" << where(excess.at)
+        << "; E = cant - D V^2 |curvature| / g, D = " << D << " m) is beyond "
+        << "cant_excess_max_m = " << L.cant_excess_max_m * 1e3
+        << " mm (EN 13803-1 maximum): no line runs this";
+    warn(r, "cant_excess_beyond_limit", "track", msg.str());
+  }
+}
+
 // --- equilibrium: axle loads --------------------------------------------------------------
 void axle_loads(const Model& model, double V, const EquilibriumResult& eq,
                 const ModelCheckLimits& L, ModelCheckReport& r) {
@@ -230,12 +371,15 @@ void axle_loads(const Model& model, double V, const EquilibriumResult& eq,
     r.axle_load_sum_N += a.total_N;
     if (a.total_N < L.axle_load_min_N || a.total_N > L.axle_load_max_N) {
       std::ostringstream msg;
-      msg << a.wheelset << ": axle load " << a.total_N / 1e3 << " kN (" << a.total_N / r.gravity_m_per_s2 / 1e3
-          << " t) is outside " << L.axle_load_min_N / 1e3 << " - " << L.axle_load_max_N / 1e3
+      msg << a.wheelset << ": axle load " << a.total_N / 1e3 << " kN";
+      if (r.gravity_m_per_s2 > 0.0) msg << " (" << a.total_N / r.gravity_m_per_s2 / 1e3 << " t)";
+      msg << " is outside " << L.axle_load_min_N / 1e3 << " - " << L.axle_load_max_N / 1e3
           << " kN, the range of railway vehicles (masses in tonnes, or the wrong body "
              "carried by this wheelset?)";
       warn(r, "axle_load_out_of_range", a.wheelset, msg.str());
     }
+    check_wheel_load_ratio(a, L, r);
+    check_lateral_shift(model, int(b), q6(int(CoordinateIndex::y), Eigen::Index(b)), r);
     r.axle_loads.push_back(a);
   }
 }
@@ -347,6 +491,7 @@ ModelCheckReport check_model(const SceneSpec& spec, const Model& model, double s
   ModelCheckReport r;
   r.speed_m_per_s = speed_m_per_s;
   static_checks(spec, model, options.limits, r);
+  check_cant(model, speed_m_per_s, options.limits, r);
   axle_loads(model, speed_m_per_s, equilibrium, options.limits, r);
   unheld_longitudinal(model, speed_m_per_s, equilibrium.state, options.limits, r);
   if (options.natural_frequencies) {
@@ -365,6 +510,7 @@ ModelCheckReport check_model_without_equilibrium(const SceneSpec& spec, const Mo
   ModelCheckReport r;
   r.speed_m_per_s = spec.speed_m_per_s;
   static_checks(spec, model, options.limits, r);
+  check_cant(model, spec.speed_m_per_s, options.limits, r);
   unheld_longitudinal(model, spec.speed_m_per_s,
                       lowered_nominal_state(model, spec.speed_m_per_s), options.limits, r);
   r.errors.push_back(error);

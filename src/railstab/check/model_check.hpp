@@ -60,6 +60,40 @@ struct ModelCheckLimits {
   // eigenvalue omega^2 below (2 pi f)^2 with f this, whose eigenvector is
   // mostly (> half) longitudinal coordinates.
   double unheld_frequency_max_hz = 0.05;
+
+  // --- plausibility of the run's conditions (docs/commands.md, "Plausibility
+  // checks": each rule with its reason) ---------------------------------------
+  // A damper c in series with k_s acts as the damper below its corner
+  // frequency f_c = k_s / (2 pi c) and as the spring above it: its effective
+  // damping is c / (1 + (f / f_c)^2). The modes that matter for stability
+  // (body modes to hunting) lie in [series_damper_band_min_hz,
+  // series_damper_band_max_hz]. f_c below the band's low end by the factor
+  // below (10: the damper keeps < 1 % of c in the band) is a damper that does
+  // nothing: k_s in MN/m given as N/m. f_c above the high end by the factor
+  // above (100) is a series spring that is rigid for every modelled motion
+  // (k_s in N/mm given as N/m, or a stiffness meant elsewhere); it adds only
+  // a time constant c / k_s far shorter than any mode.
+  double series_damper_band_min_hz = 0.5, series_damper_band_max_hz = 20.0;
+  double series_damper_corner_factor_below = 10.0;
+  double series_damper_corner_factor_above = 100.0;
+  // Cant deficiency I = D V^2 |kappa| / g - cant_outer (and excess E = -I),
+  // D = track.rail_contact_distance_m: EN 13803-1's maximum limits for plain
+  // line, conventional (non-tilting) passenger vehicles: I 150 mm, E 110 mm.
+  // Tilting trains run at up to 300 mm deficiency: raise the limit for them.
+  double cant_deficiency_max_m = 0.150;
+  double cant_excess_max_m = 0.110;
+  // A cant below this (m) counts as none (no direction to check).
+  double cant_direction_min_m = 0.001;
+  // Larger over smaller wheel load of an axle in the steady state. The
+  // quasi-static load transfer of a car body on its suspension is
+  // dQ/Q0 = 2 h a_q / (g D) (h = 1.8 m, a_q = 0.98 m/s^2 at the 150 mm
+  // deficiency limit, D = 1.5 m: 0.24, a ratio of 1.6); with the car body's
+  // roll on soft air springs and the creep forces the coach of
+  // cases/coach_curve.toml reaches 2.17 at 159 mm (R = 1000 m, 37 m/s).
+  // 2.5 (dQ/Q0 = 0.43) leaves every admissible curving state below it;
+  // EN 14363's wheel-unloading limit dQ/Q0 = 0.6 (ratio 4) includes a track
+  // twist on top.
+  double wheel_load_ratio_max = 2.5;
 };
 
 struct ModelCheckOptions {
@@ -82,7 +116,10 @@ struct ModelWarning {
   // Stable identifiers (tests and scripts match them):
   //   wheelset_placed_by_position, spring_ends_apart, static_deflection_large,
   //   body_mass_out_of_range, inertia_out_of_range, axle_load_out_of_range,
-  //   longitudinal_unheld, contact_distance_mismatch, unit_looks_wrong
+  //   longitudinal_unheld, contact_distance_mismatch, unit_looks_wrong,
+  //   series_damper_corner_below_band, series_damper_corner_above_band,
+  //   cant_on_inner_rail, cant_deficiency_beyond_limit, cant_excess_beyond_limit,
+  //   wheel_loads_unbalanced, lateral_shift_beyond_flange_clearance
   std::string kind;
   std::string subject;  // body, element, contact or key it is about
   std::string message;  // what is wrong, the value, the expected range, the key

@@ -50,6 +50,51 @@ void check_self_intersection(const std::string& source, const std::vector<RawPro
   }
 }
 
+// Orientation of a wheel profile's flange (profile.hpp frame: y outward, z
+// up, the flange at negative y reaching DOWN, i.e. to larger radius).
+// The flange is the part of the profile more than
+// kWheelFlangeMinimumHeight_m away from the tape-circle height z_tape (z at
+// y = 0, or at the end nearest to it). Two mistakes keep the profile a valid
+// function z(y) with its inner end lower than its field end, so the check
+// before this one passes them:
+//   - rotated by 180 degrees ((y, z) -> (-y, -z)) or z mirrored with the
+//     order reversed: the flange points UP and out, an interior highest
+//     point above z_tape (a correct tread's highest point is its field end,
+//     at most a chamfer of a few mm above z_tape);
+//   - a flange (lowest point below z_tape) on the field side y > 0.
+// Flangeless profiles (a cone, a hollow tread) have no part that far from
+// z_tape inside the profile and pass.
+void check_wheel_flange(const Profile& profile) {
+  const std::vector<double>& y = profile.y_m;
+  const std::vector<double>& z = profile.z_m;
+  double z_tape = y.front() > 0.0 ? z.front() : z.back();
+  for (size_t i = 1; i < y.size(); ++i)
+    if (y[i - 1] <= 0.0 && y[i] >= 0.0) {
+      z_tape = z[i - 1] + (z[i] - z[i - 1]) * (0.0 - y[i - 1]) / (y[i] - y[i - 1]);
+      break;
+    }
+  const size_t top = size_t(std::max_element(z.begin(), z.end()) - z.begin());
+  const size_t low = size_t(std::min_element(z.begin(), z.end()) - z.begin());
+  const double h = kWheelFlangeMinimumHeight_m;
+  if (top + 1 < z.size() && z[top] - z_tape > h) {
+    std::ostringstream msg;
+    msg << "the wheel profile rises to z = " << z[top] << " m at y = " << y[top]
+        << " m, " << z[top] - z_tape << " m above the tape circle (z = " << z_tape
+        << " m at y = 0), inside the profile: its flange points up (expected the flange at "
+           "negative y reaching down, z up: r = r0 - z); is the profile rotated by 180 "
+           "degrees or z mirrored (SIMPACK z points down)?";
+    fail(at_line(profile.source, profile.line[top]), msg.str());
+  }
+  if (z_tape - z[low] > h && y[low] > 0.0) {
+    std::ostringstream msg;
+    msg << "the wheel profile's flange (its lowest point, z = " << z[low] << " m, "
+        << z_tape - z[low] << " m below the tape circle) is at y = " << y[low]
+        << " m, on the field side; expected the flange at negative y (y points outward): is "
+           "y mirrored (SIMPACK mirror.y)?";
+    fail(at_line(profile.source, profile.line[low]), msg.str());
+  }
+}
+
 }  // namespace
 
 Profile make_profile(ProfileKind kind, const std::string& source,
@@ -137,6 +182,7 @@ Profile make_profile(ProfileKind kind, const std::string& source,
              "is the profile mirrored (SIMPACK mirror.y / mirror.z)?";
       fail(source, msg.str());
     }
+    check_wheel_flange(profile);
   } else {
     const auto top = std::max_element(profile.z_m.begin(), profile.z_m.end());
     if (top == profile.z_m.begin() || top == profile.z_m.end() - 1) {

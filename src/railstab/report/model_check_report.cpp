@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <sstream>
+#include <string>
 
 namespace railstab {
 
@@ -14,6 +16,14 @@ double max_axle_load(const ModelCheckReport& r) {
   double m = 0.0;
   for (const AxleLoad& a : r.axle_loads) m = std::max(m, a.total_N);
   return m;
+}
+
+// A load as the mass it carries (t), "-" without gravity (no finite mass).
+std::string tonnes(double load_N, const ModelCheckReport& r) {
+  if (!(r.gravity_m_per_s2 > 0.0)) return "-";
+  std::ostringstream s;
+  s << std::setprecision(6) << load_N / r.gravity_m_per_s2 / 1e3;
+  return s.str();
 }
 
 }  // namespace
@@ -43,9 +53,9 @@ void write_model_check_markdown(std::ostream& out, const ModelCheckReport& r) {
         << "| wheelset | left [kN] | right [kN] | axle [kN] | axle [t] |\n|---|---|---|---|---|\n";
     for (const AxleLoad& a : r.axle_loads)
       out << "| " << a.wheelset << " | " << a.left_N / 1e3 << " | " << a.right_N / 1e3 << " | "
-          << a.total_N / 1e3 << " | " << a.total_N / r.gravity_m_per_s2 / 1e3 << " |\n";
+          << a.total_N / 1e3 << " | " << tonnes(a.total_N, r) << " |\n";
     out << "| sum | | | " << r.axle_load_sum_N / 1e3 << " | "
-        << r.axle_load_sum_N / r.gravity_m_per_s2 / 1e3 << " |\n\n";
+        << tonnes(r.axle_load_sum_N, r) << " |\n\n";
   }
   out << "## Static deflections under the preloads\n\n";
   if (r.static_deflections.empty()) {

@@ -104,6 +104,14 @@ inline constexpr PhysicalRange rail_contact_distance_m{"a rail contact distance"
 // Nominal flange clearance ~5-10 mm; up to 0.2 m for models without flanges.
 inline constexpr PhysicalRange flange_clearance_m{"a flange clearance", 0.0, 0.2, "m", true};
 inline constexpr PhysicalRange conicity{"a conicity", 0.0, 1.0, "", true};
+// Knife-edge cone angle gamma (conicity tan(gamma)): new treads are 1:40 to
+// 1:20 (0.025-0.05 rad), equivalent conicities of worn wheels reach ~0.4
+// (EN 14363's highest reference conicity for stability tests is 0.4 below
+// 160 km/h). Below 0.01 rad the kinematic wavelength 2 pi sqrt(r0 e0 / gamma)
+// exceeds 100 m (a cylinder, not a cone); above 0.4 rad (23 degrees) the
+// "cone" is a flange flank (~1.2 rad), which a knife-edge tread model cannot
+// represent. Both ends are input errors (a degree given as rad, 0 for "none").
+inline constexpr PhysicalRange cone_angle_rad{"a knife-edge cone angle", 0.01, 0.4, "rad"};
 // A wheel load: 1e5 N under a 20 t axle load; 1e6 N would be a 200 t axle.
 inline constexpr PhysicalRange wheel_load_N{"a wheel load", 0.0, 1e6, "N", true};
 // Kalker coefficients at the largest wheel loads: f11, f22 ~ 1e7 N,
@@ -126,6 +134,21 @@ inline constexpr PhysicalRange arc_length_m{"an arc length", 0.0, 1e7, "m"};
 // The fastest wheel-rail runs are ~160 m/s; also the CLI's --speed range.
 inline constexpr PhysicalRange speed_m_per_s{"a speed", 0.0, 300.0, "m/s"};
 inline constexpr PhysicalRange gravity_m_per_s2{"a gravity", 0.0, 100.0, "m/s2"};
+// With a Hertz wheel-rail contact the weight makes the wheel loads, and the
+// wheel loads the creep coefficients: gravity 0 leaves wheels unloaded
+// (axle loads of 1e-7 kN, no creep force). 9.81 on Earth; 1 m/s2 admits
+// reduced-gravity studies, anything below is an input error.
+inline constexpr PhysicalRange gravity_with_hertz_contact_m_per_s2{
+    "a gravity (a Hertz wheel-rail contact carries the weight)", 1.0, 100.0, "m/s2"};
+// Lowest speed at which the creep laws are used. Creepages are slip
+// velocities divided by V (ERRATA 10): the creep forces' damping f / V grows
+// without bound as V -> 0 (at 1e-9 m/s the lateral creep time constant
+// m V / f22 of a wheelset is ~1e-16 s, and an integration runs away).
+// Kalker's steady-state theory also needs the contact patch (semi-axis
+// a ~ 6 mm) to roll over its own length fast against the motion: the
+// relaxation time a / V is 0.06 s at 0.1 m/s, a tenth of a 1.6 Hz period.
+// Below it a transient creep model (or none) would be needed.
+inline constexpr double kMinimumCreepSpeed_m_per_s = 0.1;
 inline constexpr PhysicalRange t_end_s{"an end time", 0.0, 1e5, "s", true};
 inline constexpr PhysicalRange output_interval_s{"an output interval", 1e-7, 1e3, "s"};
 inline constexpr PhysicalRange relative_tolerance{"a relative tolerance", 1e-14, 1.0, ""};

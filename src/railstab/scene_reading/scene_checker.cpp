@@ -72,6 +72,14 @@ class SceneChecker {
     namespace r = physical_ranges;
     check_name("scene.name", scene_.name);
     require_in("scene.gravity_m_per_s2", scene_.gravity_m_per_s2, r::gravity_m_per_s2);
+    for (const BodySpec& body : scene_.bodies) {
+      const ContactSpec* contact = body.is_wheelset ? find_contact(body.contact) : nullptr;
+      if (contact && contact->normal == NormalForceKind::hertz) {
+        require_in("scene.gravity_m_per_s2", scene_.gravity_m_per_s2,
+                   r::gravity_with_hertz_contact_m_per_s2);
+        break;
+      }
+    }
     require_in("scene.reference_arc_length_m", scene_.reference_arc_length_m, r::arc_length_m);
   }
 
@@ -143,11 +151,9 @@ class SceneChecker {
   void check_contact(const ContactSpec& contact) const {
     const std::string path = contact_path(contact);
     auto at = [&](std::string_view key) { return child_path(path, key); };
-    if (contact.geometry == ContactGeometryKind::knife_edge_cone &&
-        !(contact.cone_angle_rad > 0 && contact.cone_angle_rad < 0.5))
-      fail(at("cone_angle_rad"), "a cone angle in (0, 0.5) rad",
-           format_number(contact.cone_angle_rad));
     namespace r = physical_ranges;
+    if (contact.geometry == ContactGeometryKind::knife_edge_cone)
+      require_in(at("cone_angle_rad"), contact.cone_angle_rad, r::cone_angle_rad);
     if (contact.geometry == ContactGeometryKind::linear_conicity)
       require_in(at("conicity"), contact.conicity, r::conicity);
     if (contact.geometry != ContactGeometryKind::profiles) {
@@ -329,8 +335,12 @@ class SceneChecker {
     for (const BodySpec& body : scene_.bodies) {
       const ContactSpec* contact = body.is_wheelset ? find_contact(body.contact) : nullptr;
       if (contact && contact->tangential != TangentialForceKind::none &&
-          !(scene_.speed_m_per_s > 0))
-        fail(path, "> 0 when creep forces are on (creepages are divided by the speed)",
+          !(scene_.speed_m_per_s >= physical_ranges::kMinimumCreepSpeed_m_per_s))
+        fail(path,
+             "at least kMinimumCreepSpeed_m_per_s = " +
+                 format_number(physical_ranges::kMinimumCreepSpeed_m_per_s) +
+                 " m/s when creep forces are on (creepages are divided by the speed; below it "
+                 "the steady-state creep laws do not hold, docs/scene_format.md)",
              format_number(scene_.speed_m_per_s));
     }
     require_in(path, scene_.speed_m_per_s, physical_ranges::speed_m_per_s);

@@ -76,7 +76,10 @@ ModeShape mode_shape(const Model& model, const LinearModel& lin, const ModeShape
   ModeShape shape;
   // Reference coordinate: largest lateral, else translation, else any.
   const Eigen::VectorXd abs_q = q.cwiseAbs();  // each modulus once (hypot)
-  const double largest = abs_q.maxCoeff();
+  // No free body coordinate (n = 0): the mode is an element's internal state
+  // alone (a series damper relaxing, lambda = -k_s / c); it has no body
+  // motion to describe. maxCoeff of an empty vector reads past its end.
+  const double largest = n > 0 ? abs_q.maxCoeff() : 0.0;
   auto pick = [&](auto eligible) {
     int best = -1;
     for (int k = 0; k < n; ++k) {

@@ -13,6 +13,32 @@ std::string coordinate_word(int coordinate) {
   return words[coordinate];
 }
 
+namespace {
+
+// A mode in which no body moves (every kinetic share 0: no free body
+// coordinate, or one held away from the element): only elements' internal
+// states take part, e.g. a series damper relaxing between held bodies
+// (lambda = -k_s / c). Named after its largest internal state; the body
+// names of mode_name_from_shape would describe a motion that is not there.
+bool moves_no_body(const ModeShape& shape) {
+  return std::all_of(shape.coordinates.begin(), shape.coordinates.end(),
+                     [](const CoordinateMotion& c) { return c.kinetic_share == 0.0; });
+}
+
+std::string internal_state_mode_name(const Model& model, const LinearModel& lin,
+                                     const Eigen::VectorXcd& vector) {
+  int best = -1;
+  for (int j = 0; j < int(lin.kept_states.size()) && j < int(vector.size()); ++j) {
+    const int state = lin.kept_states[size_t(j)];
+    if (!model.is_internal(state)) continue;
+    if (best < 0 || std::abs(vector(j)) > std::abs(vector(best))) best = j;
+  }
+  if (best < 0) return "no body motion";
+  return model.state_name(lin.kept_states[size_t(best)]) + " (internal state, no body motion)";
+}
+
+}  // namespace
+
 std::vector<int> conjugate_partners(const std::vector<ModeReport>& modes) {
   std::vector<int> partner(modes.size(), -1);
   for (size_t i = 0; i < modes.size(); ++i) {
@@ -102,8 +128,9 @@ std::vector<ModeReport> describe_modes(const Model& model, const LinearModel& li
       const CoordinateMotion& c = coords[size_t(k)];
       m.participation.push_back({model.bodies[size_t(c.body)].name, c.coordinate, c.kinetic_share});
     }
-    m.shape_name = m.neutral ? "neutral (rigid-body/cyclic)"
-                             : mode_name_from_shape(model, roles, shapes[i], p.value);
+    m.shape_name = m.neutral               ? "neutral (rigid-body/cyclic)"
+                   : moves_no_body(shapes[i]) ? internal_state_mode_name(model, lin, p.vector)
+                                              : mode_name_from_shape(model, roles, shapes[i], p.value);
     modes.push_back(std::move(m));
   }
   std::vector<std::string> names;
