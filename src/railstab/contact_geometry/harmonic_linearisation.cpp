@@ -58,6 +58,11 @@ HarmonicLinearisation harmonic_linearisation(const std::function<double(double)>
   }
   std::sort(angles.begin(), angles.end());
   const GaussLegendre& gl = gauss_legendre();
+  // f - f(c) is integrated: the constant contributes nothing to the gain
+  // in exact arithmetic, and in floating point its cancellation would cost
+  // eps |f(c)| / A in the gain (1e-10 relative for a radius of 0.46 m at
+  // A = 1 um).
+  const double f_centre = f(centre);
   double gain_integral = 0, bias_integral = 0;
   for (size_t p = 0; p + 1 < angles.size(); ++p) {
     const double a = angles[p], b = angles[p + 1];
@@ -66,14 +71,14 @@ HarmonicLinearisation harmonic_linearisation(const std::function<double(double)>
     for (int k = 0; k < kGaussNodesPerPiece; ++k) {
       const double th = mid + half * gl.x[size_t(k)];
       const double s = std::sin(th);
-      const double v = f(centre + amplitude * s);
+      const double v = f(centre + amplitude * s) - f_centre;
       gain_integral += half * gl.w[size_t(k)] * v * s;
       bias_integral += half * gl.w[size_t(k)] * v;
     }
   }
   HarmonicLinearisation h;
   h.gain = 2.0 * gain_integral / (std::numbers::pi * amplitude);
-  h.bias = bias_integral / std::numbers::pi;
+  h.bias = f_centre + bias_integral / std::numbers::pi;
   return h;
 }
 

@@ -24,7 +24,8 @@
 // on each piece, and the rule converges exponentially: for a piecewise cubic
 // (a Hermite-interpolated table row) or a polynomial of degree d <= 15 in
 // y, the integrand is a polynomial in sin th of degree d + 1 on a piece;
-// measured error < 1e-14 relative for the tests' cubic, saturation and
+// f - f(c) is integrated (no cancellation of a large constant);
+// measured error < 1e-13 relative for the tests' cubic, saturation and
 // dead zone (tests/contact_geometry/test_harmonic_linearisation.cpp). A
 // kink or jump of f that is not given as a breakpoint costs accuracy: the
 // piece's error is then O(h^2) (kink) or O(h) (jump) in the piece length h.
