@@ -13,10 +13,15 @@
 #include <railstab/report/equilibrium_report.hpp>
 #include <railstab/nonlinear/hopf_assessment.hpp>
 #include <railstab/report/stability_report.hpp>
+#include <railstab/report/quasi_linear_report.hpp>
+#include <railstab/stability/quasi_linear_critical_speed.hpp>
 #include <railstab/stability/speed_analysis.hpp>
 
+#include <cmath>
 #include <iostream>
 #include <memory>
+#include <optional>
+#include <sstream>
 
 namespace railstab {
 
@@ -83,11 +88,150 @@ void run_eigen(const CommonArgs& a, double max_hz) {
   list_written(outputs.commit(), std::cout);
 }
 
+// --- quasi-linear critical speed by amplitude -------------------------------------------
+// critical-speed --amplitude A / --amplitudes FROM:TO:STEP (metres; TO may be
+// "flange": the flange-contact shift of the scene's profiles).
+struct QuasiLinearArgs {
+  std::optional<double> amplitude_m;
+  std::string amplitudes;
+};
+
+inline constexpr int kMaxAmplitudes = 1000;
+
+// FROM:TO:STEP in metres, each finite and positive (TO also "flange"); the
+// amplitudes FROM, FROM + STEP, ... up to TO (within STEP / 1000).
+std::vector<double> parse_amplitudes(const std::string& text, double flange_m) {
+  auto fail = [&](const std::string& why) {
+    throw std::invalid_argument("--amplitudes: expected FROM:TO:STEP in metres (0 < FROM <= TO, "
+                                "STEP > 0, TO a number or 'flange'), got '" + text + "': " + why);
+  };
+  std::vector<std::string> parts;
+  std::stringstream ss(text);
+  for (std::string p; std::getline(ss, p, ':');) parts.push_back(p);
+  if (parts.size() != 3) fail("not three fields");
+  auto number = [&](const std::string& p, const char* what) {
+    size_t used = 0;
+    double v = 0;
+    try {
+      v = std::stod(p, &used);
+    } catch (const std::exception&) {
+      fail(std::string(what) + " is not a number");
+    }
+    if (used != p.size() || !std::isfinite(v) || !(v > 0)) fail(std::string(what) + " is not a finite positive number");
+    return v;
+  };
+  const double from = number(parts[0], "FROM"), step = number(parts[2], "STEP");
+  double to = 0;
+  if (parts[1] == "flange") {
+    if (!(flange_m > 0)) fail("the scene's profiles have no flange contact (or no profile contact)");
+    to = flange_m;
+  } else {
+    to = number(parts[1], "TO");
+  }
+  if (!(from <= to)) fail("FROM above TO");
+  if ((to - from) / step + 1 > kMaxAmplitudes) fail("more than " + std::to_string(kMaxAmplitudes) + " amplitudes");
+  std::vector<double> a;
+  for (int i = 0;; ++i) {
+    const double v = from + i * step;
+    if (v > to + 1e-3 * step) break;
+    a.push_back(v);
+  }
+  return a;
+}
+
+// The builder's range error under the flag's name.
+template <class F> auto with_flag(const char* flag, F&& f) {
+  try {
+    return f();
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string(flag) + ": " + e.what());
+  }
+}
+
+void run_quasi_linear_amplitude(const CommonArgs& a, const CriticalSpeedOptions& opt,
+                                const PreparedScene& s, double amplitude_m) {
+  std::cerr << "quasi-linear critical speed of " << s.model.name << " at amplitude "
+            << amplitude_m * 1e3 << " mm between " << opt.from_m_per_s << " and "
+            << opt.to_m_per_s << " m/s\n";
+  const QuasiLinearModelBuilder builder(s.model, s.equilibrium.state);
+  const QuasiLinearModel q = with_flag("--amplitude", [&] { return builder.at(amplitude_m); });
+  QuasiLinearCriticalSpeed r;
+  r.amplitude_m = amplitude_m;
+  r.wheelsets = q.wheelsets;
+  r.has_profile_contact = q.has_profile_contact;
+  r.result = find_critical_speed(q.model, s.equilibrium.state, s.speed_m_per_s, opt);
+  const std::string solver =
+      r.result.grid.empty() ? a.solver : eigen_solver_name(r.result.grid.front().solver_used);
+  OutputSet outputs(a.out_dir);
+  write_stability_results(s.model, r.result, outputs, stem_for(s.model) + "_quasi_linear", solver,
+                          a.plots, opt.stability.max_frequency_hz, nullptr, &r);
+  const std::vector<std::string> written = outputs.commit();
+  std::cout << "quasi-linear contact at amplitude " << amplitude_m * 1e3 << " mm";
+  if (!r.wheelsets.empty())
+    std::cout << " (equivalent conicity of " << r.wheelsets.front().body << ": "
+              << r.wheelsets.front().equivalent_conicity << ")";
+  else
+    std::cout << " (no profile contact: the plain model)";
+  std::cout << "\n";
+  print_critical_speed_summary(std::cout, s.model, r.result, opt.stability.max_frequency_hz);
+  list_written(written, std::cout);
+}
+
+void run_quasi_linear_curve(const CommonArgs& a, const CriticalSpeedOptions& opt,
+                            const PreparedScene& s, const std::string& amplitudes_text) {
+  const QuasiLinearModelBuilder builder(s.model, s.equilibrium.state);
+  const std::vector<double> amplitudes =
+      parse_amplitudes(amplitudes_text, builder.flange_contact_amplitude_m());
+  if (builder.has_profile_contact() && amplitudes.back() > builder.max_amplitude_m()) {
+    std::ostringstream msg;
+    msg << "--amplitudes: the largest amplitude " << amplitudes.back() * 1e3 << " mm exceeds "
+        << builder.max_amplitude_m() * 1e3
+        << " mm (the contact table's lateral range less 1 mm, less the steady shift)";
+    throw std::invalid_argument(msg.str());
+  }
+  std::cerr << "quasi-linear critical speed of " << s.model.name << " at " << amplitudes.size()
+            << " amplitudes " << amplitudes.front() * 1e3 << " .. " << amplitudes.back() * 1e3
+            << " mm, between " << opt.from_m_per_s << " and " << opt.to_m_per_s << " m/s\n";
+  CriticalSpeedOptions plain_opt = opt;
+  plain_opt.progress = nullptr;
+  plain_opt.mode_shapes_at_critical = false;
+  const CriticalSpeedResult plain =
+      find_critical_speed(s.model, s.equilibrium.state, s.speed_m_per_s, plain_opt);
+  const QuasiLinearCurve curve = quasi_linear_critical_speed_curve(
+      builder, s.equilibrium.state, s.speed_m_per_s, amplitudes, opt,
+      [](int i, int n, double A) {
+        std::cerr << "  amplitude " << i << "/" << n << ": " << A * 1e3 << " mm done\n";
+      });
+  OutputSet outputs(a.out_dir);
+  write_quasi_linear_curve(s.model, curve, plain.critical_speed_found ? plain.critical_speed_m_per_s : 0.0,
+                           opt.from_m_per_s, opt.to_m_per_s, outputs, stem_for(s.model), a.plots);
+  const std::vector<std::string> written = outputs.commit();
+  std::cout << s.model.name << ": quasi-linear critical speed by amplitude (linear: ";
+  if (plain.critical_speed_found) std::cout << plain.critical_speed_m_per_s << " m/s)\n";
+  else std::cout << "none in the range)\n";
+  for (const QuasiLinearCurvePoint& p : curve.points) {
+    std::cout << "  A = " << p.amplitude_m * 1e3 << " mm, conicity " << p.equivalent_conicity << ": ";
+    if (p.critical_speed_found) std::cout << p.critical_speed_m_per_s << " m/s, " << p.frequency_Hz << " Hz\n";
+    else std::cout << p.note << "\n";
+  }
+  std::cout << "CPU " << curve.cpu_seconds << " s for the curve\n";
+  list_written(written, std::cout);
+}
+
 // --- critical speed / sweep -----------------------------------------------------------
-void run_critical_speed(const CommonArgs& a, CriticalSpeedOptions opt) {
+void run_critical_speed(const CommonArgs& a, CriticalSpeedOptions opt, const QuasiLinearArgs& ql = {}) {
   check_speed_grid(opt.from_m_per_s, opt.to_m_per_s, opt.grid_step_m_per_s);
+  if (ql.amplitude_m && !ql.amplitudes.empty())
+    throw std::invalid_argument("--amplitude and --amplitudes: give one of them");
   if (a.plots) require_gnuplot();  // before the sweep, not after it
   const PreparedScene s = prepare_command_scene(a);
+  if (ql.amplitude_m || !ql.amplitudes.empty()) {
+    opt.stability = stability_options(a);
+    opt.progress = [](const std::string& line) { std::cerr << line << "\n"; };
+    if (ql.amplitude_m) run_quasi_linear_amplitude(a, opt, s, *ql.amplitude_m);
+    else run_quasi_linear_curve(a, opt, s, ql.amplitudes);
+    return;
+  }
   opt.stability = stability_options(a);
   opt.progress = [](const std::string& line) { std::cerr << line << "\n"; };
   std::cerr << "critical speed of " << s.model.name << " between " << opt.from_m_per_s
@@ -157,7 +301,19 @@ void register_stability_commands(CLI::App& app) {
                     "also report the lowest speed where a mode in the hunting band has a damping "
                     "ratio below this (e.g. 0.05), bisected like the critical speed")
         ->check(finite_in(flag_ranges::damping_ratio));
-    cmd->callback([a, opt] { run_critical_speed(*a, *opt); });
+    auto ql = std::make_shared<QuasiLinearArgs>();
+    if (!is_sweep) {
+      cmd->add_option("--amplitude", ql->amplitude_m,
+                      "quasi-linear critical speed: the profile contacts replaced by their "
+                      "harmonic linearisation at this wheelset lateral amplitude (m, e.g. 0.003); "
+                      "outputs <scene>_quasi_linear_*")
+          ->check(finite_in(flag_ranges::wheelset_amplitude_m));
+      cmd->add_option("--amplitudes", ql->amplitudes,
+                      "the quasi-linear critical speed over amplitudes FROM:TO:STEP (m; TO may be "
+                      "'flange', the flange-contact shift), e.g. 0.0001:flange:0.0001: curve "
+                      "V_c(A) as CSV, JSON and plot");
+    }
+    cmd->callback([a, opt, ql] { run_critical_speed(*a, *opt, *ql); });
   }
 }
 

@@ -133,6 +133,11 @@ TEST(CliOutputNames, EveryKeyAndColumnFollowsTheNamingConvention) {
       {{"work-precision", kWheelset, "--t-end", "0.2", "--integrators", "cvode_bdf", "--rtols",
         "1e-3"}},
       {{"contact-geometry", kCases + "/s1002_uic60_contact.toml"}},
+      // The quasi-linear critical speed at one amplitude and over amplitudes.
+      {{"critical-speed", kWheelset, "--from", "5", "--to", "120", "--step", "5", "--amplitude",
+        "0.003"}},
+      {{"critical-speed", kWheelset, "--from", "5", "--to", "120", "--step", "5", "--amplitudes",
+        "0.001:0.003:0.001"}},
   };
   std::size_t names = 0;
   for (std::size_t i = 0; i < commands.size(); ++i) {

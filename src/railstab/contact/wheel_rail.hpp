@@ -174,11 +174,12 @@ ContactPointGeometry<T> profile_slot_geometry(const ModelContactTpl<S>& contact,
   g.point_I.setZero();
   g.nu_I = Vec3<T>(T(0), T(0), T(1));
   g.rolling_radius_m = g.A_per_m = g.B_per_m = g.contact_angle_rad = T(0);
-  const T gap = pg.table.vertical_gap<T>(slot, pose);
+  const ContactTable& table = pg.table_for(side);
+  const T gap = table.vertical_gap<T>(slot, pose);
   g.penetration_m = -gap;  // (the vertical overlap: its sign is all that is used out of contact)
   g.weight = T(0);
   if (value_of(gap) >= 0.0) return g;
-  const TableContact<T> c = pg.table.evaluate<T>(slot, pose);
+  const TableContact<T> c = table.evaluate<T>(slot, pose);
   g.weight = c.interior_weight;
   if (value_of(g.weight) <= 0.0) return g;
   const T alpha = c.wheel_slope_rad;  // gamma - s phi: the normal's angle in I

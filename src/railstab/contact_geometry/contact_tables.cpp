@@ -127,6 +127,37 @@ ContactTable make_contact_table(const ProfilePair& pair, const ContactTableOptio
   return t;
 }
 
+ContactTable ContactTable::plane_table(const ContactTableOptions& o, double nominal_lateral_m,
+                                       double q_c, double theta_c,
+                                       const std::array<Plane, kTableQuantities>& planes) {
+  if (!(o.lateral_step_m > 0 && o.lateral_half_range_m >= 2 * o.lateral_step_m &&
+        o.roll_step_rad > 0 && o.roll_half_range_rad >= o.roll_step_rad))
+    throw std::invalid_argument(
+        "ContactTable::plane_table: expected positive steps and half ranges of at least two "
+        "lateral steps and one roll step");
+  ContactTable t;
+  t.options_ = o;
+  t.nominal_lateral_m_ = nominal_lateral_m;
+  t.nq_ = 2 * int(std::lround(o.lateral_half_range_m / o.lateral_step_m)) + 1;
+  t.nt_ = 2 * int(std::lround(o.roll_half_range_rad / o.roll_step_rad)) + 1;
+  t.dq_ = 2 * o.lateral_half_range_m / (t.nq_ - 1);
+  t.dt_ = 2 * o.roll_half_range_rad / (t.nt_ - 1);
+  t.q0_ = -o.lateral_half_range_m;
+  t.t0_ = -o.roll_half_range_rad;
+  t.slot_data_.resize(1);
+  for (int q = 0; q < kTableQuantities; ++q) {
+    const Plane& p = planes[size_t(q)];
+    std::vector<Node>& n = t.slot_data_[0][size_t(q)];
+    n.resize(size_t(t.nq_) * size_t(t.nt_));
+    for (int i = 0; i < t.nq_; ++i)
+      for (int j = 0; j < t.nt_; ++j)
+        n[size_t(i * t.nt_ + j)] = Node{
+            p.at_centre + p.d_dq * (t.lateral_at(i) - q_c) + p.d_dtheta * (t.roll_at(j) - theta_c),
+            p.d_dq, p.d_dtheta, 0.0};
+  }
+  return t;
+}
+
 TableResolution measure_table_resolution(const ProfilePair& pair, const ContactTable& table,
                                          double near_gap_m, double branch_jump_m) {
   TableResolution r;

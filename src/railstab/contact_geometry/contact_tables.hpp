@@ -118,6 +118,19 @@ class ContactTable {
   double lateral_at(int i) const { return q0_ + i * dq_; }
   double roll_at(int j) const { return t0_ + j * dt_; }
 
+  // A one-slot table on `grid` whose every quantity is a plane in the table
+  // variables (q, theta), about the point (q_c, theta_c):
+  //   f(q, theta) = f_c + df_dq (q - q_c) + df_dtheta (theta - theta_c),
+  // which the Hermite interpolation reproduces exactly (node slopes are the
+  // plane's, cross derivative 0). The quasi-linear contact's table
+  // (quasi_linear_contact.hpp). Same range check as every table.
+  struct Plane {
+    double at_centre = 0, d_dq = 0, d_dtheta = 0;
+  };
+  static ContactTable plane_table(const ContactTableOptions& grid, double nominal_lateral_m,
+                                  double q_c, double theta_c,
+                                  const std::array<Plane, kTableQuantities>& planes);
+
  private:
   friend ContactTable make_contact_table(const ProfilePair&, const ContactTableOptions&);
   struct Node {

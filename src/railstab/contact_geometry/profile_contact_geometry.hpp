@@ -8,12 +8,20 @@
 #include <railstab/profiles/profile_pair.hpp>
 
 #include <memory>
+#include <optional>
 
 namespace railstab {
 
 struct ProfileContactGeometry {
   ProfilePair pair;
   ContactTable table;
+  // The right wheel's table where it differs from the left's (a quasi-linear
+  // contact about a wheelset centre y_c != 0: quasi_linear_contact.hpp);
+  // empty: the right wheel is the left's mirror image on the same table.
+  std::optional<ContactTable> right_table;
+  const ContactTable& table_for(int side) const {
+    return side < 0 && right_table ? *right_table : table;
+  }
   // The steepest angle of the wheel's flange face (between the flange tip
   // and the tape circle), the angle of Nadal's derailment limit
   //   Y/Q = (tan(beta) - mu) / (1 + mu tan(beta)).

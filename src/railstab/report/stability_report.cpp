@@ -1,5 +1,7 @@
 #include <railstab/report/stability_report.hpp>
 
+#include <railstab/report/quasi_linear_report.hpp>
+
 #include <railstab/report/run_conditions.hpp>
 
 #include <railstab/io/csv.hpp>
@@ -328,7 +330,7 @@ void write_hopf_json(JsonWriter& j, const HopfAssessment* h) {
 
 void write_json(std::ostream& out, const Model& model, const CriticalSpeedResult& r,
                 const RunConditions& conditions, const std::string& solver, double max_hz,
-                const HopfAssessment* hopf) {
+                const HopfAssessment* hopf, const QuasiLinearCriticalSpeed* quasi_linear) {
   {
     JsonWriter j(out);
     j.begin_object().field("scene", model.name).field("scene_file", model.source_path);
@@ -343,6 +345,7 @@ void write_json(std::ostream& out, const Model& model, const CriticalSpeedResult
         .field("speed_tolerance_requested_m_per_s", r.requested_tolerance_m_per_s)
         .field("equilibrium_acceleration_tolerance_m_per_s2", EquilibriumOptions{}.acceleration_tolerance);
     j.field("from_m_per_s", r.from_m_per_s).field("to_m_per_s", r.to_m_per_s);
+    if (quasi_linear) write_quasi_linear_json(j, *quasi_linear);
     j.field("partial", r.partial);
     if (r.partial)
       j.field("partial_reason", r.partial_reason);
@@ -454,7 +457,8 @@ void write_json(std::ostream& out, const Model& model, const CriticalSpeedResult
 
 void write_markdown(std::ostream& md_out, const Model& model, const CriticalSpeedResult& r,
                     const RunConditions& conditions, const std::string& solver,
-                    const StabilityFiles& files, const HopfAssessment* hopf) {
+                    const StabilityFiles& files, const HopfAssessment* hopf,
+                    const QuasiLinearCriticalSpeed* quasi_linear) {
   auto rel = [&](const std::string& f) { return f; };  // names in the same folder
   {
     std::ostream& md = md_out;
@@ -467,6 +471,7 @@ void write_markdown(std::ostream& md_out, const Model& model, const CriticalSpee
        << r.requested_tolerance_m_per_s << " m/s, steady states to "
        << EquilibriumOptions{}.acceleration_tolerance << " m/s^2.\n\n"
        << conditions_markdown(conditions) << "\n";
+    if (quasi_linear) md << quasi_linear_markdown(*quasi_linear) << "\n";
     if (r.partial)
       md << "**Partial result**: the run could not finish what was asked; what it found is "
             "below. Reason: "
@@ -571,7 +576,8 @@ std::vector<std::string> stability_file_names(const std::string& stem) {
 StabilityFiles write_stability_results(const Model& model, const CriticalSpeedResult& result,
                                        OutputSet& outputs, const std::string& stem,
                                        const std::string& eigen_solver_name, bool plots,
-                                       double max_plot_frequency_hz, const HopfAssessment* hopf) {
+                                       double max_plot_frequency_hz, const HopfAssessment* hopf,
+                                       const QuasiLinearCriticalSpeed* quasi_linear) {
   for (const std::string& name : stability_file_names(stem)) outputs.replaces(name);
   StabilityFiles files;
   const std::vector<std::vector<int>>& ids = result.mode_tracks;
@@ -587,14 +593,14 @@ StabilityFiles write_stability_results(const Model& model, const CriticalSpeedRe
   outputs.write(files.json,
                 [&](std::ostream& out) {
                   write_json(out, model, result, conditions, eigen_solver_name,
-                             max_plot_frequency_hz, hopf);
+                             max_plot_frequency_hz, hopf, quasi_linear);
                 });
   if (plots)
     files.plots = {stem + "_root_locus.png", stem + "_damping_vs_speed.png",
                    stem + "_frequency_vs_speed.png"};
   files.markdown = stem + "_critical_speed.md";
   outputs.write(files.markdown, [&](std::ostream& out) {
-    write_markdown(out, model, result, conditions, eigen_solver_name, files, hopf);
+    write_markdown(out, model, result, conditions, eigen_solver_name, files, hopf, quasi_linear);
   });
   if (plots) {
     const std::string tracks = stem + "_tracks.dat";

@@ -5,6 +5,7 @@
 #include <railstab/io/output_set.hpp>
 #include <railstab/model/model.hpp>
 #include <railstab/nonlinear/hopf_assessment.hpp>
+#include <railstab/stability/quasi_linear_critical_speed.hpp>
 #include <railstab/stability/speed_analysis.hpp>
 #include <railstab/stability/verdict.hpp>
 
@@ -28,11 +29,15 @@ struct StabilityFiles {
 // the Hopf criticality at the critical speed (assess_hopf), written when
 // given (the JSON's first_lyapunov_coefficient and hopf_kind are null
 // without it).
+// `quasi_linear`: the result is the quasi-linear model's at an amplitude
+// (stability/quasi_linear_critical_speed.hpp): the JSON gets its
+// "quasi_linear" object, the Markdown its section.
 StabilityFiles write_stability_results(const Model& model, const CriticalSpeedResult& result,
                                        OutputSet& outputs, const std::string& stem,
                                        const std::string& eigen_solver_name, bool plots = true,
                                        double max_plot_frequency_hz = 20.0,
-                                       const HopfAssessment* hopf = nullptr);
+                                       const HopfAssessment* hopf = nullptr,
+                                       const QuasiLinearCriticalSpeed* quasi_linear = nullptr);
 
 // The outcome for the terminal: the critical speed (or stable / unstable
 // over the range), where the steady state was lost, the first validity
