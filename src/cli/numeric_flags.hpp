@@ -38,6 +38,8 @@ inline const FlagRange cpu_budget_s{0.0, 86400.0, true, false, "s"};
 // Below 1 um the response drowns in integration error; above 10 mm it
 // reaches the flange clearance.
 inline const FlagRange amplitude_m{1e-6, 0.01, false, false, "m"};
+// A periodic orbit's lateral amplitude limit: up to beyond flange contact.
+inline const FlagRange orbit_amplitude_m{0.0, 0.05, true, false, "m"};
 inline const FlagRange periods{0.0, 1000.0, true, false, "periods"};
 inline const FlagRange settle_periods{0.0, 1000.0, false, true, "periods"};
 // A damping-ratio limit: a positive fraction of critical damping.
