@@ -133,6 +133,7 @@ TEST(CliOutputNames, EveryKeyAndColumnFollowsTheNamingConvention) {
       {{"work-precision", kWheelset, "--t-end", "0.2", "--integrators", "cvode_bdf", "--rtols",
         "1e-3"}},
       {{"contact-geometry", kCases + "/s1002_uic60_contact.toml"}},
+      {{"bifurcation", kWheelset, "--from", "50", "--to", "100", "--max-amplitude", "0.002"}},
   };
   std::size_t names = 0;
   for (std::size_t i = 0; i < commands.size(); ++i) {
