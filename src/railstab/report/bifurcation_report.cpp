@@ -76,9 +76,9 @@ void write_orbit_json(JsonWriter& j, const PeriodicOrbit& o, const BifurcationRe
 void write_branch_json(JsonWriter& j, const BranchResult& b, const BifurcationResult& r) {
   j.begin_object().field("origin", b.origin).field("started", b.error.empty());
   if (b.error.empty())
-    j.key("error").null().field("stop_reason", b.branch.stop_reason);
+    j.key("not_started_reason").null().field("stop_reason", b.branch.stop_reason);
   else
-    j.field("error", b.error).key("stop_reason").null();
+    j.field("not_started_reason", b.error).key("stop_reason").null();
   j.field("orbit_count", int(b.branch.orbits.size()))
       .field("failed_correctors", b.branch.failed_correctors)
       .field("cpu_s", b.branch.cpu_seconds);
