@@ -363,16 +363,25 @@ void write_markdown(std::ostream& md, const Model& model, const BifurcationResul
                                                   ? "none: unstable at the start of the range"
                                                   : "none in the range"))
      << " |\n";
-  md << "| Hopf bifurcation | "
-     << (r.hopf_kind.empty() ? std::string("kind not known")
-                             : r.hopf_kind + (r.hopf_computed
-                                                  ? " (first Lyapunov coefficient)"
-                                                  : " (from the side of the critical speed where "
-                                                    "the first orbits lie; profile contact)"))
-     << "; " << md_text(describe_hopf(r.hopf_assessment)) << " |\n";
+  // From l1 the description says it all; with profile contact the kind
+  // comes from the first orbits and the description says why l1 is not.
+  md << "| Hopf bifurcation | ";
+  if (r.hopf_computed)
+    md << md_text(describe_hopf(r.hopf_assessment));
+  else
+    md << (r.hopf_kind.empty() ? std::string("kind not known")
+                               : r.hopf_kind + " (from the side of the critical speed where the "
+                                               "first orbit lies)")
+       << "; first Lyapunov coefficient " << md_text(describe_hopf(r.hopf_assessment));
+  md << " |\n";
+  // The explanation opens with "<speed> m/s, " or with "not found: ": the
+  // table puts that part in bold.
+  const std::string& e = r.nonlinear.explanation;
+  const size_t head = r.nonlinear.found ? e.find(", ") : e.rfind("not found: ", 0) == 0 ? 9 : std::string::npos;
   md << "| nonlinear critical speed | "
-     << (r.nonlinear.found ? "**" + speed_text(r.nonlinear.speed_m_per_s) + "**" : std::string("**not found**"))
-     << ": " << md_text(r.nonlinear.explanation) << " |\n";
+     << (head == std::string::npos ? md_text(e)
+                                   : "**" + md_text(e.substr(0, head)) + "**" + md_text(e.substr(head)))
+     << " |\n";
   const double ratio = nonlinear_to_linear_ratio(r);
   if (std::isfinite(ratio)) md << "| nonlinear / linear | " << std::setprecision(5) << ratio << " |\n";
   md << std::setprecision(6) << "\n";
@@ -407,8 +416,8 @@ void write_markdown(std::ostream& md, const Model& model, const BifurcationResul
     for (size_t k = 0; k < o.size(); ++k)
       md << "| " << k + 1 << " | " << std::setprecision(8) << o[k].speed_m_per_s << " | "
          << std::setprecision(6) << o[k].period_s << " | " << 1.0 / o[k].period_s << " | "
-         << 1e3 * o[k].amplitude(r.coords.amplitude_state) << " | "
-         << std::abs(o[k].critical_multiplier) << " | " << (o[k].stable ? "yes" : "no") << " |\n";
+         << 1e3 * o[k].amplitude(r.coords.amplitude_state) << " | " << std::setprecision(9)
+         << std::abs(o[k].critical_multiplier) << std::setprecision(6) << " | " << (o[k].stable ? "yes" : "no") << " |\n";
     md << "\n";
   }
   for (const std::string& png : files.plots) md << "![bifurcation diagram](" << png << ")\n\n";
