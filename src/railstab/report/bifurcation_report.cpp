@@ -461,9 +461,7 @@ void print_bifurcation_summary(std::ostream& out, const Model& model, const Bifu
   out << model.name << ": linear critical speed "
       << (has_linear_critical(r) ? speed_text(r.linear.critical_speed_m_per_s) : std::string("none in the range"))
       << ", Hopf " << (r.hopf_kind.empty() ? std::string("kind not known") : r.hopf_kind) << "\n"
-      << "nonlinear critical speed "
-      << (r.nonlinear.found ? speed_text(r.nonlinear.speed_m_per_s) : std::string("not found")) << " ("
-      << r.nonlinear.explanation << ")";
+      << "nonlinear critical speed " << r.nonlinear.explanation;
   const double ratio = nonlinear_to_linear_ratio(r);
   if (std::isfinite(ratio)) out << ", ratio to the linear " << std::setprecision(5) << ratio;
   out << "\n";
