@@ -226,8 +226,8 @@ NonlinearCriticalSpeed nonlinear_critical_speed(const BifurcationResult& r) {
       break;
     case StableBound::hopf_point:
       e << v << " m/s, the first orbit of the branch from the supercritical Hopf point: the stable "
-        << "hunting orbits grow from zero amplitude at the linear critical speed (up to the "
-        << "amplitude limit; a fold at larger amplitude is not excluded)";
+        << "hunting orbits grow from zero amplitude at the linear critical speed (on the computed "
+        << "part of the branch; a fold at larger amplitude is not excluded)";
       break;
     case StableBound::period_doubling:
     case StableBound::torus:
