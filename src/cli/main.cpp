@@ -1,5 +1,6 @@
 // railstab: lateral stability of railway vehicles. Subcommands live in
 // src/cli/*_command.cpp; this file only wires them and reports errors.
+#include "cli/bifurcation_command.hpp"
 #include "cli/check_command.hpp"
 #include "cli/contact_geometry_command.hpp"
 #include "cli/modes_command.hpp"
@@ -28,6 +29,7 @@ int main(int argc, char** argv) {
   railstab::register_work_precision_command(app);
   railstab::register_contact_geometry_command(app);
   railstab::register_check_command(app);
+  railstab::register_bifurcation_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -42,6 +42,8 @@ inline const FlagRange amplitude_m{1e-6, 0.01, false, false, "m"};
 // widest contact table a scene may have (the scene's table range is checked
 // after reading it).
 inline const FlagRange wheelset_amplitude_m{0.0, 0.05, true, false, "m"};
+// A periodic orbit's lateral amplitude limit: up to beyond flange contact.
+inline const FlagRange orbit_amplitude_m{0.0, 0.05, true, false, "m"};
 inline const FlagRange periods{0.0, 1000.0, true, false, "periods"};
 inline const FlagRange settle_periods{0.0, 1000.0, false, true, "periods"};
 // A damping-ratio limit: a positive fraction of critical damping.

@@ -138,6 +138,7 @@ TEST(CliOutputNames, EveryKeyAndColumnFollowsTheNamingConvention) {
         "0.003"}},
       {{"critical-speed", kWheelset, "--from", "5", "--to", "120", "--step", "5", "--amplitudes",
         "0.001:0.003:0.001"}},
+      {{"bifurcation", kWheelset, "--from", "50", "--to", "100", "--max-amplitude", "0.002"}},
   };
   std::size_t names = 0;
   for (std::size_t i = 0; i < commands.size(); ++i) {

@@ -4,7 +4,7 @@
 // pseudo-arclength continuation, orbit_continuation.hpp) from the Hopf point
 // and, independently, from a hunting cycle found by a time-domain run at a
 // given speed. The nonlinear critical speed is the lowest speed with a stable
-// hunting orbit on either branch (its fold).
+// hunting orbit on either branch (its fold), nonlinear_critical_speed below.
 //
 // Profile contact (tabulated wheel-rail geometry, C1 between table points):
 // the first Lyapunov coefficient would be the third derivative of the
@@ -12,13 +12,13 @@
 // point then starts from the eigenvector alone (V guessed at V_c, corrected
 // at fixed excursion) and its first two orbits say on which side of V_c the
 // small cycles lie (the Hopf kind as the continuation finds it).
+#include <railstab/nonlinear/hopf_assessment.hpp>
 #include <railstab/nonlinear/hopf_criticality.hpp>
 #include <railstab/nonlinear/model_orbits.hpp>
 #include <railstab/nonlinear/orbit_continuation.hpp>
 #include <railstab/stability/speed_analysis.hpp>
 
 #include <functional>
-#include <limits>
 #include <string>
 #include <vector>
 
@@ -38,7 +38,43 @@ struct BifurcationOptions {
   double disturbance_m = 0.005;
   double settle_time_s = 6.0;
   double cycle_speed_step_m_per_s = -0.5;  // the second orbit's speed offset (direction)
+  // One line per orbit (branch, speed, amplitude, largest multiplier,
+  // stability, steps, Newton iterations, CPU) and per stage.
   std::function<void(const std::string&)> progress;
+};
+
+// Where a wheelset's lateral displacement and yaw sit in the reduced state
+// (-1: not a free coordinate): the report's amplitudes per orbit.
+struct WheelsetOrbitStates {
+  std::string name;
+  int lateral_state = -1;  // "<name>.y_m"
+  int yaw_state = -1;      // "<name>.yaw_rad"
+};
+
+// How the lowest stable orbit speed is bounded below (nonlinear_critical_speed):
+// - fold: the stable part of a branch ends at a fold (the branch turns back
+//   to higher speeds, unstable): below it no orbit of that branch exists;
+// - hopf_point: the stable part starts at the Hopf point (supercritical):
+//   the nonlinear critical speed is the linear one;
+// - period_doubling, torus: the stable part ends where a multiplier leaves
+//   the unit circle at -1 or as a complex pair (orbits go on, unstable);
+// - speed_range_end: the branch left the speed range still stable;
+// - branch_end: the branch stopped (step-size floor, orbit limit, amplitude
+//   limit) at a stable orbit: what lies beyond is not known.
+// The first four determine the speed (found); the last two only bound it
+// from above (not found: the report says so and gives the bound).
+enum class StableBound { none, fold, hopf_point, period_doubling, torus, speed_range_end, branch_end };
+std::string stable_bound_name(StableBound bound);  // "fold", "hopf_point", ...
+
+struct NonlinearCriticalSpeed {
+  bool found = false;                      // a determined lower end of the stable orbits
+  double speed_m_per_s = 0.0;              // when found
+  StableBound bound = StableBound::none;   // of the lowest stable orbit (none: no stable orbit)
+  // The lowest speed of a stable orbit or fold next to one on any branch,
+  // found or not (an upper bound when !found); 0 with bound none.
+  double lowest_stable_speed_m_per_s = 0.0;
+  int branch = -1;                         // index into BifurcationResult::branches
+  std::string explanation;                 // one sentence: what the number is, or why none
 };
 
 struct BranchResult {
@@ -56,13 +92,23 @@ struct BifurcationResult {
   // where the Hopf branch's first orbits lie; "" when neither is known.
   std::string hopf_kind;
   std::vector<BranchResult> branches;
-  // The lowest speed with a stable orbit on any branch; NaN when none.
-  double nonlinear_critical_speed_m_per_s = std::numeric_limits<double>::quiet_NaN();
+  // The Hopf criticality as the critical-speed command assesses it (the same
+  // l1 and kind, or why not computed): its description in the report.
+  HopfAssessment hopf_assessment;
+  NonlinearCriticalSpeed nonlinear;
   std::vector<int> reduced_states;        // full-state index of every orbit state
   std::vector<std::string> state_names;   // of the reduced states
   OrbitCoordinates coords;
+  std::string amplitude_state_name;       // the excursion state ("wheelset1.y_m")
+  std::vector<WheelsetOrbitStates> wheelsets;
+  // The speed range and limits the branches ran with.
+  double from_m_per_s = 0.0, to_m_per_s = 0.0, max_amplitude_m = 0.0;
   double cpu_seconds = 0.0;
 };
+
+// The lowest stable orbit of the branches and what bounds it below (see
+// StableBound); `r.branches`, `r.linear` and `r.hopf_kind` set.
+NonlinearCriticalSpeed nonlinear_critical_speed(const BifurcationResult& r);
 
 // `equilibrium` is the steady state at `speed_m_per_s` (the scene's).
 BifurcationResult analyse_bifurcation(const Model& model, const Eigen::VectorXd& equilibrium,

@@ -67,7 +67,11 @@ void fold_vertex(const PeriodicOrbit& p, const PeriodicOrbit& c, const PeriodicO
               s * (other.amplitude(amplitude_state) - c.amplitude(amplitude_state));
 }
 
-void detect_bifurcations(OrbitBranch& branch, int ia, double tolerance) {
+// `speed_resolution`: speed changes below it are the corrector's noise (its
+// relative tolerance on V), not a turn of the branch (a branch at nearly
+// constant speed, as a nearly linear model's, would show "folds" at every
+// orbit).
+void detect_bifurcations(OrbitBranch& branch, int ia, double tolerance, double speed_resolution) {
   const auto& o = branch.orbits;
   const int k = int(o.size()) - 1;  // the orbit just added
   if (k < 1) return;
@@ -75,7 +79,8 @@ void detect_bifurcations(OrbitBranch& branch, int ia, double tolerance) {
   if (k >= 2) {
     const double before = o[size_t(k - 1)].speed_m_per_s - o[size_t(k - 2)].speed_m_per_s;
     const double after = o[size_t(k)].speed_m_per_s - o[size_t(k - 1)].speed_m_per_s;
-    if (before * after < 0.0) {
+    if (before * after < 0.0 && std::abs(before) > speed_resolution &&
+        std::abs(after) > speed_resolution) {
       OrbitBifurcation b;
       b.kind = OrbitBifurcationKind::fold;
       b.after_orbit = k - 1;
@@ -115,8 +120,14 @@ OrbitBranch continue_branch(const FlowSystem& system, const OrbitCoordinates& co
   const double sV = options.speed_scale_m_per_s, sa = options.amplitude_scale;
   OrbitBranch branch;
   branch.orbits = std::move(first_two);
+  if (options.progress)
+    for (size_t k = 0; k < branch.orbits.size(); ++k) options.progress(int(k) + 1, branch.orbits[k]);
   const double tol = options.shooting.multiplier_tolerance;
-  detect_bifurcations(branch, ia, tol);
+  auto detect = [&] {
+    const double V = std::max(1.0, std::abs(branch.orbits.back().speed_m_per_s));
+    detect_bifurcations(branch, ia, tol, 10.0 * options.shooting.newton_relative_tolerance * V);
+  };
+  detect();
   double h = options.initial_step;
   auto finish = [&](std::string reason) {
     branch.stop_reason = std::move(reason);
@@ -126,7 +137,6 @@ OrbitBranch continue_branch(const FlowSystem& system, const OrbitCoordinates& co
   while (true) {
     const PeriodicOrbit& c = branch.orbits.back();
     const PeriodicOrbit& p = branch.orbits[branch.orbits.size() - 2];
-    if (options.progress) options.progress(int(branch.orbits.size()), c.speed_m_per_s, c.amplitude(ia));
     if (int(branch.orbits.size()) >= options.max_orbits) return finish("orbit limit reached");
     if (c.speed_m_per_s < options.min_speed_m_per_s) return finish("below the speed range");
     if (c.speed_m_per_s > options.max_speed_m_per_s) return finish("above the speed range");
@@ -156,6 +166,7 @@ OrbitBranch continue_branch(const FlowSystem& system, const OrbitCoordinates& co
         const int iterations = next.newton_iterations;
         branch.orbits.push_back(std::move(next));
         accepted = true;
+        if (options.progress) options.progress(int(branch.orbits.size()), branch.orbits.back());
         if (iterations <= options.fast_newton_iterations)
           h = std::min(options.max_step, h * options.growth_factor);
       } catch (const ShootingFailure&) {
@@ -163,7 +174,7 @@ OrbitBranch continue_branch(const FlowSystem& system, const OrbitCoordinates& co
         h /= 2.0;
       }
     }
-    detect_bifurcations(branch, ia, tol);
+    detect();
     if (branch.orbits.back().amplitude(ia) < 1e-3 * options.amplitude_scale &&
         branch.orbits.back().amplitude(ia) < branch.orbits[branch.orbits.size() - 2].amplitude(ia))
       return finish("back at the steady state (the orbit shrank to zero)");

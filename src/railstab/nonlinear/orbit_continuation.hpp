@@ -45,7 +45,9 @@ struct ContinuationOptions {
   double min_speed_m_per_s = 0.0;         // stop outside [min, max]
   double max_speed_m_per_s = 1e9;
   double max_amplitude = 1e9;             // stop when the excursion exceeds it (flange climbing)
-  std::function<void(int orbits, double speed_m_per_s, double amplitude)> progress;
+  // Called for every orbit as it joins the branch (the first two included),
+  // with its 1-based number on the branch.
+  std::function<void(int orbit_number, const PeriodicOrbit& orbit)> progress;
 };
 
 enum class OrbitBifurcationKind { fold, period_doubling, torus };
