@@ -17,7 +17,7 @@ TEST(CliSpeedRamp, TwoRatesInOneReport) {
   const test::CliRun run = test::run_railstab(
       {"simulate", test::case_path("thesis_bogie_tangent"), "--speed", "36.95", "--mode", "hunting",
        "--mode-amplitude", "0.0045", "--ramp-rate", "0.1", "--ramp-rate", "0.2", "--ramp-to", "25",
-       "--out", "out"},
+       "--set", "track.segments[0].length_m=8000", "--out", "out"},
       dir);
   ASSERT_EQ(run.exit_code, 0) << run.output;
   const std::string json = test::read_text(dir / "out" / "thesis_bogie_tangent_36.95mps_ramp.json");

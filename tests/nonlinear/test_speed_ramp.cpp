@@ -19,9 +19,12 @@ using namespace railstab;
 
 namespace {
 
+// The scene's tangent is 1000 m (900 m ahead of the reference point): a
+// ramp of a few minutes needs more, or it ends where the clothoid begins.
 PreparedScene bogie_at(double V) {
   SceneOverrides o;
   o.speed_m_per_s = V;
+  o.values = {SceneValueSetting("track.segments[0].length_m", 8000.0)};
   return prepare_scene(test::case_path("thesis_bogie_tangent"), o);
 }
 
@@ -166,9 +169,12 @@ TEST(SpeedRamp, HuntingEndsBelowTheHopfPointByTheSlowPassageDelay) {
                 a, model_end.back(), predicted.back(), Vc, r.trajectory.stats.cpu_seconds,
                 r.trajectory.times_s.back());
     // Below the Hopf point, by the passage delay of the normal form within
-    // 15 % of it (RAMP_TOLERANCE below).
+    // 3 % of it: the normal form is the cubic truncation, exact as the
+    // amplitude goes to zero, and the delay is set below Vc where the
+    // amplitude is small; the envelope's one-period window lags by a T
+    // (0.03 m/s at 0.04 m/s^2, 1 % of the delay). Measured: 0.5 % and 0.04 %.
     EXPECT_LT(model_end.back(), Vc);
-    EXPECT_NEAR(model_end.back(), predicted.back(), 0.15 * (Vc - predicted.back()));
+    EXPECT_NEAR(model_end.back(), predicted.back(), 0.03 * (Vc - predicted.back()));
   }
   // The slower ramp ends nearer Vc; a quarter of the rate, about half the
   // delay (sqrt(a), with the logarithm's slow change): ratio in [1.6, 2.6].

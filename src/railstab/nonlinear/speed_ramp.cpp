@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -113,6 +114,21 @@ SpeedRampResult run_speed_ramp(const Model& model, const Eigen::VectorXd& x0,
 
   IntegrationOptions io = options.integration;
   io.t_end_s = a > 0.0 ? (V0 - options.end_speed_m_per_s) / a : options.duration_s;
+  // The hunting of one stretch of track: the run ends where the first body
+  // leaves the uniform stretch (tangent, or arc at constant cant) it starts
+  // on, after s = V0 t - a t^2 / 2 = D.
+  double track_limit_s = std::numeric_limits<double>::infinity();
+  std::string first_out;
+  for (int b = 0; b < int(model.bodies.size()); ++b) {
+    const double s0 = model.arc_length_of(b, 0.0, V0);
+    const double D = model.track.uniform_stretch_end_m(s0) - s0;
+    const double t_b = a > 0.0 ? (V0 * V0 > 2.0 * a * D ? (V0 - std::sqrt(V0 * V0 - 2.0 * a * D)) / a
+                                                        : std::numeric_limits<double>::infinity())
+                               : D / V0;
+    if (t_b < track_limit_s) track_limit_s = t_b, first_out = model.bodies[size_t(b)].name;
+  }
+  const bool track_limited = track_limit_s < io.t_end_s;
+  if (track_limited) io.t_end_s = track_limit_s;
   EnvelopeTracker tracker(signal, options);
   tracker.add(0.0, x0);
   io.stop_at_output = [&](double t, const Eigen::VectorXd& x) { return tracker.add(t, x); };
@@ -151,6 +167,10 @@ SpeedRampResult run_speed_ramp(const Model& model, const Eigen::VectorXd& x0,
             << r.hunting_end_speed_m_per_s << " m/s (t = " << r.hunting_end_time_s << " s)";
   } else {
     outcome << "still hunting at the end of the run, " << r.final_speed_m_per_s << " m/s";
+    if (track_limited && r.trajectory.stopped_early.empty())
+      outcome << ", where " << first_out
+              << " leaves the uniform stretch of track it started on (start further back "
+                 "with a longer tangent, e.g. --set track.segments[0].length_m=...)";
   }
   if (!r.trajectory.stopped_early.empty() && !r.vanished)
     outcome << "; the run stopped early: " << r.trajectory.stopped_early;
