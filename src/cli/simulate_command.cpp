@@ -5,6 +5,8 @@
 #include "cli/scene_command.hpp"
 #include "cli/numeric_flags.hpp"
 #include "cli/set_flag.hpp"
+#include "cli/speed_ramp_run.hpp"
+#include "cli/start_flags.hpp"
 #include <railstab/setup/prepare_scene.hpp>
 #include <railstab/integrate/error_estimate.hpp>
 #include <railstab/integrate/integrator.hpp>
@@ -24,12 +26,15 @@
 #include <memory>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 
 namespace railstab {
 
 namespace {
 
 struct SimulateArgs : SceneCommandArgs {
+  StartFlags start;
+  RampFlags ramp;
   double t_end = 0.0;
   std::string csv;
   std::string integrator;  // label, e.g. "cvode_bdf_q2"; empty: the scene's
@@ -52,7 +57,11 @@ IntegrationOptions integration_options(const SimulateArgs& args, const Simulatio
 }
 
 void run_simulate(const SimulateArgs& args) {
-  if (args.plots) require_gnuplot();  // before the run, not after it
+  check_start_flags(args.overrides, args.start);
+  const bool ramp = !args.ramp.rates_m_per_s2.empty();
+  if (!ramp && args.ramp.end_speed_m_per_s)
+    throw std::invalid_argument("--ramp-to: expected --ramp-rate A too");
+  if (args.plots && !ramp) require_gnuplot();  // before the run, not after it
   PreparedScene scene = prepare_command_scene(args);
   const Model& model = scene.model;
   std::cerr << "scene " << model.name << ": " << model.bodies.size() << " bodies, "
@@ -64,7 +73,25 @@ void run_simulate(const SimulateArgs& args) {
   opt.progress = [&](double t) {
     std::cerr << "  t = " << t << " / " << opt.t_end_s << " s\n";
   };
-  const Eigen::VectorXd x0 = perturbed_initial_state(scene);
+  RunStart start;
+  for (const OffsetSetting& o : args.overrides.offsets) start.offset_settings.push_back(o.text);
+  Eigen::VectorXd x0;
+  if (const std::optional<ModeStart> mode = mode_start_from_flags(scene, args.start)) {
+    x0 = mode->state;
+    start.on_mode = true;
+    start.mode_name = mode->mode_name;
+    start.eigenvalue = mode->eigenvalue;
+    start.leading_wheelset = mode->leading_wheelset;
+    start.amplitude_m = mode->amplitude_m;
+    std::cerr << "start on mode '" << mode->mode_name << "' (" << mode->eigenvalue.real()
+              << " 1/s), " << mode->leading_wheelset << " lateral " << mode->amplitude_m << " m\n";
+  } else {
+    x0 = perturbed_initial_state(scene);
+  }
+  if (ramp) {  // a ramp per rate instead of the run at one speed
+    run_speed_ramps(scene, x0, start, opt, args.ramp, args.out_dir);
+    return;
+  }
   const Trajectory traj = integrate(model, scene.speed_m_per_s, x0, opt);
   if (!traj.stopped_early.empty())
     std::cout << "stopped early: " << traj.stopped_early << "\n";
@@ -81,7 +108,7 @@ void run_simulate(const SimulateArgs& args) {
   // All files are staged and committed together (io/output_set.hpp): data
   // files, run summary, then the plots, which are views of the CSVs.
   const std::string stem = file_stem(model.name) + "_" + speed_file_tag(scene.speed_m_per_s);
-  const std::string summary = simulation_run_json(model, scene.speed_m_per_s, opt, traj, error);
+  const std::string summary = simulation_run_json(model, scene.speed_m_per_s, opt, traj, error, start);
   OutputSet outputs(args.out_dir);
   for (const std::string& name : time_plot_file_names(stem)) outputs.replaces(name);
   PlottedCsv trajectory_csv, roll_csv;
@@ -118,11 +145,20 @@ void run_simulate(const SimulateArgs& args) {
     std::cout << "error not estimated (--no-error-estimate)\n";
   else if (!error->available)
     std::cout << "error not estimated: " << error->reason << "\n";
+  else if (error->limit_cycle.settled)
+    std::cout << "estimated error on the limit cycle (" << error->limit_cycle.signal << ", last "
+              << error->limit_cycle.periods_compared << " periods): amplitude "
+              << error->limit_cycle.amplitude_error_m << " m of " << error->limit_cycle.amplitude_m
+              << " m, period " << error->limit_cycle.period_error_s << " s of "
+              << error->limit_cycle.period_s << " s; phase drift between the runs (not an error "
+              << "of the cycle) " << error->position_error << " at " << error->where
+              << "; from the same run at 100x tighter tolerances (wall " << error->wall_seconds
+              << " s, CPU " << error->cpu_seconds << " s)\n";
   else
     std::cout << "estimated error: " << error->position_error << " (m or rad, at " << error->where
               << "), lateral shift/yaw " << error->lateral_error
               << ", from the same run at 100x tighter tolerances (wall " << error->wall_seconds
-              << " s)\n";
+              << " s, CPU " << error->cpu_seconds << " s)\n";
   if (error && error->available && error->reference_stopped_early != traj.stopped_early)
     std::cout << "note: the tighter run "
               << (error->reference_stopped_early.empty() ? "did not stop early"
@@ -138,6 +174,8 @@ void register_simulate_command(CLI::App& app) {
   SceneFlags flags;
   flags.speed = flags.plots = true;
   add_scene_flags(cmd, *args, flags);
+  add_start_flags(cmd, args->overrides, args->start);
+  add_ramp_flags(cmd, args->ramp);
   cmd->add_option("--t-end", args->overrides.t_end_s, "end time in s (overrides the scene)")
       ->check(finite_in(flag_ranges::t_end_s));
   cmd->add_option("--csv", args->csv, "CSV output file (default OUT/<scene>_<V>mps.csv)");

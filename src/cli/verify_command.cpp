@@ -4,6 +4,7 @@
 #include <railstab/report/run_conditions.hpp>
 #include "cli/numeric_flags.hpp"
 #include "cli/set_flag.hpp"
+#include "cli/start_flags.hpp"
 #include <railstab/setup/prepare_scene.hpp>
 #include <railstab/io/file_names.hpp>
 #include <railstab/io/gnuplot.hpp>
@@ -24,6 +25,7 @@ struct VerifyArgs : SceneCommandArgs {
   VerificationOptions options;
   std::string json;
   bool scene_offsets = false;
+  StartFlags start;
 };
 
 void run_verify(const VerifyArgs& a) {
@@ -33,12 +35,28 @@ void run_verify(const VerifyArgs& a) {
         << a.options.periods << " (the fit window lies between them)";
     throw std::invalid_argument(msg.str());
   }
+  check_start_flags(a.overrides, a.start);
+  if (a.scene_offsets && !a.start.mode.empty())
+    throw std::invalid_argument("--scene-offsets and --mode: give one of them");
   if (a.plots) require_gnuplot();
   const PreparedScene s = prepare_command_scene(a);
   std::cerr << "verify " << s.model.name << " at " << s.speed_m_per_s
             << " m/s: eigen-analysis, then two time-domain runs (tolerance and 100x tighter)\n";
   VerificationOptions options = a.options;
-  if (a.scene_offsets) options.initial_state = perturbed_initial_state(s);
+  // --offset values are scene offsets given on the command line.
+  if (a.scene_offsets || !a.overrides.offsets.empty()) {
+    options.initial_state = perturbed_initial_state(s);
+    options.initial_state_description = "scene initial offsets";
+    for (const OffsetSetting& o : a.overrides.offsets)
+      options.initial_state_description += ", --offset " + o.text;
+  }
+  if (const std::optional<ModeStart> mode = mode_start_from_flags(s, a.start)) {
+    options.initial_state = mode->state;
+    std::ostringstream text;
+    text << "mode '" << mode->mode_name << "', " << mode->leading_wheelset << " lateral "
+         << mode->amplitude_m << " m";
+    options.initial_state_description = text.str();
+  }
   const VerificationResult r = verify_least_stable_mode(s.model, s.speed_m_per_s, s.equilibrium.state, options);
   const std::string stem =
       steady_state_file_stem(s.model) + "_verify_" + speed_file_tag(r.speed_m_per_s);
@@ -83,6 +101,7 @@ void register_verify_command(CLI::App& app) {
   cmd->add_flag("!--any-mode", a->options.lateral_modes_only,
                 "fit the least stable oscillatory mode of any kind (e.g. a wheelset spin mode "
                 "in a curve), on the coordinate with the largest share of its kinetic energy");
+  add_start_flags(cmd, a->overrides, a->start);
   cmd->add_flag("--scene-offsets", a->scene_offsets,
                 "start from the scene's initial offsets and rates instead of the mode "
                 "perturbation (e.g. the thesis cases' 1 mm offset of wheelset1)");

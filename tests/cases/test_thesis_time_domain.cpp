@@ -50,7 +50,7 @@ INSTANTIATE_TEST_SUITE_P(Cases, CaseRuns,
 // Thesis 5.5.1.1: 1 mm initial offset of the leading wheelset decays at
 // 20 m/s (to below 5 % in the last 3 s of 20 s) ...
 TEST(ThesisBogie, DecaysAt20) {
-  const PreparedScene scene = prepare_scene(case_path("thesis_bogie_tangent"), {20.0, 20.0, {}, {}});
+  const PreparedScene scene = prepare_scene(case_path("thesis_bogie_tangent"), {20.0, 20.0, {}, {}, {}});
   const Trajectory traj = run(scene, 20.0);
   EXPECT_LT(max_abs_lateral(scene, traj, "wheelset1", 17.0), 0.05e-3);
 }
@@ -58,7 +58,7 @@ TEST(ThesisBogie, DecaysAt20) {
 // ... and grows at 40 m/s until the flange clearance (the model's validity
 // limit) is reached.
 TEST(ThesisBogie, GrowsAt40) {
-  const PreparedScene scene = prepare_scene(case_path("thesis_bogie_tangent"), {40.0, 20.0, {}, {}});
+  const PreparedScene scene = prepare_scene(case_path("thesis_bogie_tangent"), {40.0, 20.0, {}, {}, {}});
   const Trajectory traj = run(scene, 20.0);
   EXPECT_NE(traj.stopped_early.find("flange clearance"), std::string::npos);
   EXPECT_GT(max_abs_lateral(scene, traj, "wheelset1", 0.0), 5e-3);

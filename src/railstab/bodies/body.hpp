@@ -63,13 +63,20 @@ template <class S> struct BodyTpl {
   double steady_rate(int i, double speed_m_per_s) const {
     return i == 4 ? steady_spin_rate(speed_m_per_s) : 0.0;
   }
-  // Prescribed value and rate of a frozen coordinate at time t:
-  //   q_i(t) = nominal + offset + (initial rate + steady rate) t.
-  double prescribed_rate(int i, double speed_m_per_s) const {
-    return initial_rate(i) + steady_rate(i, speed_m_per_s);
+  // Prescribed value and rate of a frozen coordinate at time t, with the
+  // speed V(t) = V0 + dV/dt t (dV/dt = 0: constant speed; the steady rate is
+  // linear in V, so its integral is steady_rate(V0) t + steady_rate(dV/dt) t^2/2):
+  //   q_i(t)  = nominal + offset + (initial rate + steady rate(V0)) t
+  //             + steady_rate(dV/dt) t^2 / 2
+  //   q_i'(t) = initial rate + steady rate(V(t)).
+  double prescribed_rate(int i, double speed_now_m_per_s) const {
+    return initial_rate(i) + steady_rate(i, speed_now_m_per_s);
   }
-  double prescribed_value(int i, double t_s, double speed_m_per_s) const {
-    return nominal_q(i) + initial_offset(i) + prescribed_rate(i, speed_m_per_s) * t_s;
+  double prescribed_value(int i, double t_s, double speed_m_per_s,
+                          double speed_rate_m_per_s2 = 0.0) const {
+    const double value = nominal_q(i) + initial_offset(i) + prescribed_rate(i, speed_m_per_s) * t_s;
+    return speed_rate_m_per_s2 == 0.0 ? value
+                                      : value + 0.5 * steady_rate(i, speed_rate_m_per_s2) * t_s * t_s;
   }
 
   // The body's differentiable parameters: f(key, index or -1, value).

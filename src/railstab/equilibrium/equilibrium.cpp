@@ -216,6 +216,12 @@ EquilibriumResult newton_equilibrium(const Model& model, double speed_m_per_s,
 EquilibriumResult solve_equilibrium(const Model& model, double speed_m_per_s,
                                     const Eigen::VectorXd& guess,
                                     const EquilibriumOptions& options) {
+  // A decelerating track frame has no steady state (its bodies feel m dV/dt).
+  if (model.speed_rate_m_per_s2 != 0.0)
+    throw std::invalid_argument(
+        "equilibrium solver: the model has a speed rate (a speed ramp, " +
+        std::to_string(model.speed_rate_m_per_s2) +
+        " m/s^2); steady states are of the constant-speed model");
   for (int k : options.only_positions)
     if (!model.is_position(k) || is_spin_angle(model, k))
       throw std::invalid_argument("equilibrium solver: only_positions holds state " +

@@ -208,6 +208,8 @@ Trajectory integrate(const Model& model, double speed_m_per_s, const Eigen::Vect
       }
       traj.times_s.push_back(outcome.t_reached);
       traj.states.push_back(stepper->state());
+      if (options.stop_at_output && traj.stopped_early.empty())
+        traj.stopped_early = options.stop_at_output(traj.times_s.back(), traj.states.back());
       break;
     }
     const auto now = std::chrono::steady_clock::now();

@@ -69,6 +69,10 @@ struct IntegrationOptions {
   bool stop_on_lift_off = false;
   // Called about once per wall-clock second with the current time.
   std::function<void(double t_s)> progress;
+  // Called at every output with its time and state: a non-empty answer
+  // ends the run there, as Trajectory::stopped_early (e.g. a speed ramp
+  // whose hunting has died away, nonlinear/speed_ramp.hpp).
+  std::function<std::string(double t_s, const Eigen::VectorXd& x)> stop_at_output;
   // Upper bound on (t_end - t_start) / output_interval: every output state is
   // kept in memory (Trajectory), so a run asking for more (t_end 1e20,
   // output_interval 1e-12) stops before it starts, naming both.

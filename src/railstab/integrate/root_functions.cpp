@@ -58,7 +58,8 @@ void RootFunctionSet::evaluate(double t_s, const Eigen::Ref<const Eigen::VectorX
       const ModelContact& c =
           geometry_only_[size_t(model_->bodies[size_t(f.body)].wheelset()->contact)];
       const WheelContact<double> w =
-          evaluate_wheel_contact(c, ws.motions[size_t(f.body)], f.side, speed_m_per_s_);
+          evaluate_wheel_contact(c, ws.motions[size_t(f.body)], f.side,
+                                 model_->speed_at(t_s, speed_m_per_s_));
       const double penetration = w.penetration_m;
       if (c.spec.normal_damping_N_s_per_m > 0.0 && penetration > 0.0) {
         g[i] = w.unclipped_normal_force_N != 0.0 ? w.unclipped_normal_force_N : -1e-20;

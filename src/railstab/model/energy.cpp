@@ -38,7 +38,7 @@ EnergyParts mechanical_energy(const Model& model, double speed_m_per_s, double t
     for (int side : {1, -1})
       for (int slot = 0; slot < contact_points_per_wheel(c); ++slot) {
         const WheelContact<double> w =
-            evaluate_wheel_contact(c, ws.motions[b], side, speed_m_per_s, slot);
+            evaluate_wheel_contact(c, ws.motions[b], side, model.speed_at(t_s, speed_m_per_s), slot);
         if (w.penetration_m > 0.0) e.contact_J += 0.4 * w.elastic_normal_force_N * w.penetration_m;
       }
   }

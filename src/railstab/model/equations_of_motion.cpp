@@ -22,8 +22,8 @@ void compute_all_body_motions(const ModelTpl<ParameterScalar<T>>& model, Workspa
         q(i) = x(k);
         qd(i) = x(n + k);
       } else {  // prescribed: nominal + offset + rate t
-        q(i) = T(body.prescribed_value(i, t_s, speed_m_per_s));
-        qd(i) = T(body.prescribed_rate(i, speed_m_per_s));
+        q(i) = T(body.prescribed_value(i, t_s, speed_m_per_s, model.speed_rate_m_per_s2));
+        qd(i) = T(body.prescribed_rate(i, model.speed_at(t_s, speed_m_per_s)));
       }
     }
     compute_body_motion(body, ws.frames[b], q, qd, ws.motions[b]);
@@ -60,7 +60,9 @@ void evaluate_rhs(const ModelTpl<ParameterScalar<T>>& model, Workspace<T>& ws, d
     for (int k = 0; k < model.n_internal_states; ++k) xdot(z0 + k) = T(0);
   }
 
-  // Wheel-rail contact.
+  // Wheel-rail contact, at the speed of this instant (creepages are slip
+  // velocities over V(t)).
+  const double speed_now_m_per_s = model.speed_at(t_s, speed_m_per_s);
   if (details) details->contacts.clear();
   for (size_t b = 0; b < model.bodies.size(); ++b) {
     const WheelsetKind* wheelset = model.bodies[b].wheelset();
@@ -70,7 +72,7 @@ void evaluate_rhs(const ModelTpl<ParameterScalar<T>>& model, Workspace<T>& ws, d
     const int points = contact_points_per_wheel(contact);
     for (int side : {1, -1})
       for (int slot = 0; slot < points; ++slot) {
-        const WheelContact<T> wc = evaluate_wheel_contact(contact, m, side, speed_m_per_s, slot);
+        const WheelContact<T> wc = evaluate_wheel_contact(contact, m, side, speed_now_m_per_s, slot);
         // Profiles: a slot out of contact has no force (Hertz only) and is
         // left out of the reports.
         if (points > 1 && value_of(wc.normal_force_N) <= 0.0) continue;

@@ -12,6 +12,13 @@
 // by element. Frozen coordinates are not states: they are prescribed,
 // q(t) = nominal + offset + rate t (rate 0, except a wheelset's spin V/r0).
 //
+// Speed law (docs/speed_ramp.md): the speed argument V0 of an evaluation is
+// the speed at t = 0; a time-domain run with a speed ramp has
+//   V(t) = V0 + speed_rate_m_per_s2 t,   s(t) = s(0) + V0 t + speed_rate t^2 / 2
+// for every body's track frame, and a frozen spin follows V(t)/r0. Every
+// steady-state analysis (equilibrium, linearisation, eigenvalues) is of a
+// model with speed_rate_m_per_s2 = 0, the default: then V(t) = V0 exactly.
+//
 // S is the scalar of the parameters: double, or an AD type when derivatives
 // with respect to parameters are wanted (cast<S2>(), as Pinocchio's
 // model.cast<NewScalar>()).
@@ -37,6 +44,8 @@ template <class S> struct ModelTpl {
   double scene_speed_m_per_s = 0.0;  // the scene's speed: the default of commands
   double gravity_m_per_s2 = 9.81;
   double reference_arc_length_m = 0.0;
+  // dV/dt of time-domain runs (m/s^2; < 0 decelerates); 0: constant speed.
+  double speed_rate_m_per_s2 = 0.0;
   std::vector<BodyTpl<S>> bodies;
   std::vector<ModelContactTpl<S>> contacts;
   std::vector<ElementTpl<S>> elements;
@@ -57,8 +66,17 @@ template <class S> struct ModelTpl {
   bool is_position(int i) const { return i < n_coordinates; }
   bool is_rate(int i) const { return i >= n_coordinates && i < 2 * n_coordinates; }
   bool is_internal(int i) const { return i >= 2 * n_coordinates; }
+  // V(t) and the distance travelled since t = 0, from V0 = the evaluation's
+  // speed. With no speed rate both are the constant-speed values, bit for bit.
+  double speed_at(double t_s, double speed_m_per_s) const {
+    return speed_rate_m_per_s2 == 0.0 ? speed_m_per_s : speed_m_per_s + speed_rate_m_per_s2 * t_s;
+  }
+  double distance_at(double t_s, double speed_m_per_s) const {
+    return speed_rate_m_per_s2 == 0.0 ? speed_m_per_s * t_s
+                                      : speed_m_per_s * t_s + 0.5 * speed_rate_m_per_s2 * t_s * t_s;
+  }
   double arc_length_of(int body, double t_s, double speed_m_per_s) const {
-    return reference_arc_length_m + bodies[body].track_offset_m + speed_m_per_s * t_s;
+    return reference_arc_length_m + bodies[body].track_offset_m + distance_at(t_s, speed_m_per_s);
   }
   int find_body(const std::string& body_name) const {
     for (size_t b = 0; b < bodies.size(); ++b)
@@ -90,8 +108,8 @@ template <class S> struct ModelTpl {
           q6(i, b) = x(k);
           qd6(i, b) = x(n_coordinates + k);
         } else {
-          q6(i, b) = bodies[b].prescribed_value(i, t_s, speed_m_per_s);
-          qd6(i, b) = bodies[b].prescribed_rate(i, speed_m_per_s);
+          q6(i, b) = bodies[b].prescribed_value(i, t_s, speed_m_per_s, speed_rate_m_per_s2);
+          qd6(i, b) = bodies[b].prescribed_rate(i, speed_at(t_s, speed_m_per_s));
         }
       }
     }
@@ -105,6 +123,7 @@ template <class S> struct ModelTpl {
     m.scene_speed_m_per_s = scene_speed_m_per_s;
     m.gravity_m_per_s2 = gravity_m_per_s2;
     m.reference_arc_length_m = reference_arc_length_m;
+    m.speed_rate_m_per_s2 = speed_rate_m_per_s2;
     for (const BodyTpl<S>& b : bodies) m.bodies.push_back(b.template cast<S2>());
     for (const ModelContactTpl<S>& c : contacts) m.contacts.push_back(c.template cast<S2>());
     for (const ElementTpl<S>& e : elements)

@@ -11,7 +11,8 @@
 namespace railstab {
 
 template <class T> struct Workspace {
-  // Track frames of every body at (t, V): they depend on time and speed only,
+  // Track frames of every body at (t, V0): they depend on time and speed only
+  // (and the model's speed rate, fixed for a model),
   // so they are recomputed when those change.
   std::vector<TrackFrameKinematics> frames;
   double frames_time_s = NAN, frames_speed_m_per_s = NAN;
@@ -29,7 +30,8 @@ template <class T> struct Workspace {
     if (t_s == frames_time_s && speed_m_per_s == frames_speed_m_per_s) return;
     for (size_t b = 0; b < model.bodies.size(); ++b)
       frames[b] = model.track.frame_at(model.arc_length_of(int(b), t_s, speed_m_per_s),
-                                       speed_m_per_s);
+                                       model.speed_at(t_s, speed_m_per_s),
+                                       model.speed_rate_m_per_s2);
     frames_time_s = t_s;
     frames_speed_m_per_s = speed_m_per_s;
   }

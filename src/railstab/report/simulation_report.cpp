@@ -2,13 +2,16 @@
 
 #include <railstab/io/json_writer.hpp>
 
+#include <cmath>
+#include <numbers>
 #include <sstream>
 
 namespace railstab {
 
 std::string simulation_run_json(const Model& model, double speed_m_per_s,
                                 const IntegrationOptions& opt, const Trajectory& traj,
-                                const std::optional<ErrorEstimate>& error) {
+                                const std::optional<ErrorEstimate>& error,
+                                const RunStart& start) {
   std::ostringstream out;
   JsonWriter j(out);
   const double simulated = traj.times_s.back() - opt.t_start_s;
@@ -31,6 +34,21 @@ std::string simulation_run_json(const Model& model, double speed_m_per_s,
       .field("rhs_evaluations", int(traj.stats.rhs_evaluations))
       .field("jacobian_evaluations", int(traj.stats.jacobian_evaluations))
       .field("stopped_early", traj.stopped_early);
+  j.key("start").begin_object();
+  if (start.on_mode) {
+    j.field("kind", "mode")
+        .field("mode", start.mode_name)
+        .field("eigenvalue_real_per_s", start.eigenvalue.real())
+        .field("eigenvalue_frequency_Hz", std::abs(start.eigenvalue.imag()) / (2.0 * std::numbers::pi))
+        .field("leading_wheelset", start.leading_wheelset)
+        .field("leading_wheelset_y_m", start.amplitude_m);
+  } else {
+    j.field("kind", "initial offsets");
+    j.key("offset_settings").begin_array();
+    for (const std::string& text : start.offset_settings) j.value(text);
+    j.end_array();
+  }
+  j.end_object();
   j.key("contact_events").begin_array();
   for (const ContactEvent& e : traj.events) j.value(e.description);
   j.end_array();
@@ -51,7 +69,29 @@ std::string simulation_run_json(const Model& model, double speed_m_per_s,
           .field("compared_outputs", error->compared_outputs)
           .field("reference_end_s", error->reference_end_s)
           .field("reference_stopped_early", error->reference_stopped_early)
-          .field("reference_wall_s", error->wall_seconds);
+          .field("reference_wall_s", error->wall_seconds)
+          .field("reference_cpu_s", error->cpu_seconds)
+          .field("position_error_kind",
+                 error->limit_cycle.settled
+                     ? "phase drift along the limit cycle (both runs on the same cycle; not an "
+                       "error of the cycle: see limit_cycle)"
+                     : "trajectory difference");
+      const LimitCycleError& c = error->limit_cycle;
+      j.key("limit_cycle").begin_object().field("settled", c.settled).field("reason", c.reason);
+      // Null where the runs did not settle on a cycle.
+      auto number_or_null = [&](const char* key, double value) {
+        j.key(key);
+        if (c.settled) j.value(value);
+        else j.null();
+      };
+      j.field("signal", c.signal).field("periods_compared", c.periods_compared);
+      number_or_null("amplitude_m", c.amplitude_m);
+      number_or_null("reference_amplitude_m", c.reference_amplitude_m);
+      number_or_null("amplitude_error_m", c.amplitude_error_m);
+      number_or_null("period_s", c.period_s);
+      number_or_null("reference_period_s", c.reference_period_s);
+      number_or_null("period_error_s", c.period_error_s);
+      j.end_object();
     }
     j.end_object();
   }

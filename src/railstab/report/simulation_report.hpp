@@ -7,15 +7,29 @@
 #include <railstab/integrate/work_precision.hpp>
 #include <railstab/model/model.hpp>
 
+#include <complex>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace railstab {
+
+// How the run started: the scene's initial offsets (with --offset values
+// written into them), or a mode scaled to the leading wheelset's lateral
+// shift (stability/mode_start.hpp).
+struct RunStart {
+  bool on_mode = false;
+  std::vector<std::string> offset_settings;  // --offset texts, in order
+  std::string mode_name, leading_wheelset;
+  std::complex<double> eigenvalue;
+  double amplitude_m = 0.0;
+};
 
 // The summary as JSON text, rendered before any file is written so a failure
 // here leaves no partial set of outputs.
 std::string simulation_run_json(const Model& model, double speed_m_per_s,
                                 const IntegrationOptions& opt, const Trajectory& traj,
-                                const std::optional<ErrorEstimate>& error);
+                                const std::optional<ErrorEstimate>& error,
+                                const RunStart& start = {});
 
 }  // namespace railstab

@@ -29,6 +29,9 @@ void write_verification_json(std::ostream& out, const Model& model, const Verifi
       .field("response", r.fitted_real_per_s > 0.0 ? "grows" : "decays")
       .field("integration_error_relative", r.integration_error_relative)
       .field("integration_wall_s", r.integration_seconds)
+      .field("integration_cpu_s", r.integration_cpu_seconds)
+      .field("reference_integration_wall_s", r.reference_integration_seconds)
+      .field("reference_integration_cpu_s", r.reference_integration_cpu_seconds)
       .field("integrator", r.integrator)
       .field("relative_tolerance", r.relative_tolerance)
       .field("start", r.start)
@@ -98,7 +101,9 @@ void print_verification_summary(std::ostream& out, const Model& model,
       << r.window_start_s << "-" << r.window_end_s << " s, fit residual "
       << r.fit.rms_residual / r.fit.rms_signal << " of the signal rms\n"
       << "integration: error estimate " << r.integration_error_relative
-      << " of the signal (vs 100x tighter tolerances), wall " << r.integration_seconds
+      << " of the signal (vs 100x tighter tolerances); run: wall " << r.integration_seconds
+      << " s, CPU " << r.integration_cpu_seconds << " s; tighter reference run: wall "
+      << r.reference_integration_seconds << " s, CPU " << r.reference_integration_cpu_seconds
       << " s\n";
 }
 

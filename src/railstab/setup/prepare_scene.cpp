@@ -68,6 +68,7 @@ SceneSpec load_scene_with_overrides(const std::string& path, const SceneOverride
     replaced.reference_arc_length = true;
   }
   validate_replaced_values(spec, replaced);
+  apply_offset_settings(spec, overrides.offsets);
   return spec;
 }
 

@@ -7,6 +7,7 @@
 #include <railstab/scene/scene_spec.hpp>
 #include <railstab/scene_reading/scene_set_values.hpp>
 #include <railstab/setup/build_model.hpp>
+#include <railstab/setup/initial_offsets.hpp>
 
 #include <optional>
 #include <string>
@@ -22,6 +23,9 @@ struct SceneOverrides {
   // --set KEY=VALUE, applied to the file's document before it is read
   // (scene_reading/scene_set_values.hpp), in order.
   std::vector<SceneValueSetting> values;
+  // --offset BODY.COORDINATE=VALUE (setup/initial_offsets.hpp): initial
+  // offsets written into the bodies' initial_offset, in order.
+  std::vector<OffsetSetting> offsets;
 };
 
 struct PreparedScene {
@@ -34,7 +38,7 @@ struct PreparedScene {
 PreparedScene prepare_scene(const std::string& path, const SceneOverrides& overrides);
 // The first step alone: the scene file read with its --set values and
 // checked (load_scene_file), its contact tables built, then the run's
-// --speed, --t-end and --arc-length applied and checked (only the checks
+// --speed, --t-end, --arc-length and --offset applied and checked (only the checks
 // those values enter: the rest of the scene was checked when read).
 SceneSpec load_scene_with_overrides(const std::string& path, const SceneOverrides& overrides);
 // The same from a scene already read and checked (overrides applied by the

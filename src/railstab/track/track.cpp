@@ -371,10 +371,13 @@ TrackGeometryPoint Track::geometry_at(double s_m) const {
   return g;
 }
 
-// The frame moves with ds/dt = V (constant), so every time derivative is V
-// times the arc-length derivative (ERRATA 4): psi' = V k, theta' = V grade',
-// phi' = V roll', and the second rates carry V^2.
-TrackFrameKinematics Track::frame_at(double s_m, double speed_m_per_s) const {
+// The frame moves with ds/dt = V, so every time derivative is V times the
+// arc-length derivative (ERRATA 4): psi' = V k, theta' = V grade',
+// phi' = V roll', and the second rates carry V^2. With a speed rate
+// dV/dt = a (a speed ramp), d2(angle)/dt2 = V^2 angle'' + a angle' and the
+// origin acceleration gains the tangential a t (docs/speed_ramp.md).
+TrackFrameKinematics Track::frame_at(double s_m, double speed_m_per_s,
+                                     double speed_rate_m_per_s2) const {
   TrackFrameKinematics k;
   k.geometry = geometry_at(s_m);
   const TrackGeometryPoint& g = k.geometry;
@@ -383,8 +386,12 @@ TrackFrameKinematics Track::frame_at(double s_m, double speed_m_per_s) const {
   k.R_WT = rotation_zyx(trig);
 
   const AngleRates rate{v * g.roll_rate_per_m, v * g.grade_rate_per_m, v * g.curvature_per_m};
-  const AngleRates rate2{v * v * g.roll_rate2_per_m2, v * v * g.grade_rate2_per_m2,
-                         v * v * g.curvature_rate_per_m2};
+  AngleRates rate2{v * v * g.roll_rate2_per_m2, v * v * g.grade_rate2_per_m2,
+                   v * v * g.curvature_rate_per_m2};
+  const double a = speed_rate_m_per_s2;
+  if (a != 0.0)
+    rate2 = AngleRates{rate2.phi + a * g.roll_rate_per_m, rate2.theta + a * g.grade_rate_per_m,
+                       rate2.psi + a * g.curvature_per_m};
   k.w_WT_T = angular_velocity_in_T(trig, rate);
   k.alpha_WT_T = angular_acceleration_in_T(trig, rate, rate2);
 
@@ -405,6 +412,7 @@ TrackFrameKinematics Track::frame_at(double s_m, double speed_m_per_s) const {
       -trig.c_theta * grade_rate);
   k.v_WT_T = k.R_WT.transpose() * (v * tangent);
   k.a_WT_T = k.R_WT.transpose() * (v * v * tangent_rate);
+  if (a != 0.0) k.a_WT_T += k.R_WT.transpose() * (a * tangent);
   return k;
 }
 

@@ -30,7 +30,8 @@ struct TrackGeometryPoint {
   int segment = 0;  // index of the segment that contains s
 };
 
-// Kinematics of a track frame moving along the track at constant speed V.
+// Kinematics of a track frame moving along the track at speed V (and
+// acceleration dV/dt).
 struct TrackFrameKinematics {
   TrackGeometryPoint geometry;
   Eigen::Matrix3d R_WT = Eigen::Matrix3d::Identity();     // A
@@ -45,7 +46,10 @@ class Track {
   explicit Track(const TrackSpec& spec);
 
   TrackGeometryPoint geometry_at(double s_m) const;
-  TrackFrameKinematics frame_at(double s_m, double speed_m_per_s) const;
+  // The frame at arc length s moving at ds/dt = V with d2s/dt2 = dV/dt
+  // (0: constant speed).
+  TrackFrameKinematics frame_at(double s_m, double speed_m_per_s,
+                                double speed_rate_m_per_s2 = 0.0) const;
 
   double length_m() const { return total_length_m_; }
   // Where the constant-curvature, constant-cant stretch through s_m ends

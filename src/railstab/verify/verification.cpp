@@ -147,9 +147,12 @@ VerificationResult verify_least_stable_mode(const Model& model, double speed_m_p
     throw std::invalid_argument("verify: the given initial state has the wrong size");
   out.trajectory = integrate(model, speed_m_per_s, x0, io);
   out.integration_seconds = out.trajectory.stats.wall_seconds;
+  out.integration_cpu_seconds = out.trajectory.stats.cpu_seconds;
   out.integrator = integrator_name(io.kind);
   out.relative_tolerance = io.relative_tolerance;
-  out.start = options.initial_state ? "given initial state" : "mode perturbation";
+  out.start = !options.initial_state ? "mode perturbation"
+              : options.initial_state_description.empty() ? "given initial state"
+                                                          : options.initial_state_description;
   if (!out.trajectory.stopped_early.empty()) {
     std::ostringstream msg;
     msg << "verify: the time integration stopped early: " << out.trajectory.stopped_early;
@@ -187,6 +190,8 @@ VerificationResult verify_least_stable_mode(const Model& model, double speed_m_p
   tight.relative_tolerance /= 100.0;
   tight.absolute_tolerance /= 100.0;
   const Trajectory ref = integrate(model, speed_m_per_s, x0, tight);
+  out.reference_integration_seconds = ref.stats.wall_seconds;
+  out.reference_integration_cpu_seconds = ref.stats.cpu_seconds;
   if (ref.times_s.size() != out.trajectory.times_s.size() || !ref.stopped_early.empty())
     throw std::runtime_error(
         "verify: the run at 100x tighter tolerances did not reach the same end (" +
