@@ -36,10 +36,10 @@ void bench_scene(const std::string& path) {
   s.reference_check_kind = IntegratorKind::cvode_bdf;
   s.reference_check_rtol = 1e-9;
   s.cpu_budget_per_run_s = 8.0;
-  const ReferenceSolution ref = compute_reference(model, model.scene_speed_m_per_s, x0, s);
+  const ReferenceSolution ref = compute_reference(model, scene.speed_m_per_s, x0, s);
   std::printf("%s: %d states, %.0f m/s, %.0f s; reference %s rtol %.0e (CPU %.2f s), "
               "differs from %s rtol %.0e by %.2g\n",
-              model.name.c_str(), model.state_size(), model.scene_speed_m_per_s, s.t_end_s,
+              model.name.c_str(), model.state_size(), scene.speed_m_per_s, s.t_end_s,
               integrator_name(ref.kind).c_str(), ref.rtol, ref.cpu_seconds,
               integrator_name(ref.check_kind).c_str(), ref.check_rtol, ref.check_difference);
   std::printf("  %-13s %7s %10s %10s %8s %8s %8s %8s %8s\n", "integrator", "rtol", "error",
@@ -47,7 +47,7 @@ void bench_scene(const std::string& path) {
   for (const IntegratorVariant& v : s.variants) {
     bool reached = false;
     for (double rtol : s.relative_tolerances) {
-      const WorkPrecisionRun r = run_against_reference(model, model.scene_speed_m_per_s, x0, s, v, rtol, ref);
+      const WorkPrecisionRun r = run_against_reference(model, scene.speed_m_per_s, x0, s, v, rtol, ref);
       if (r.status != "ok") {
         std::printf("  %-13s %7.0e  %s\n", r.label.c_str(), rtol, r.status.c_str());
         break;

@@ -37,10 +37,10 @@ void bench_scene(const std::string& path) {
   const double V = scene.speed_m_per_s;
   Eigen::VectorXd xdot;
   const double t_rhs = time_per_call([&] { evaluate_rhs<double>(model, ws, 0.0, V, x, xdot); });
-  const double t_rhs_frames = time_per_call([&] { xdot = rhs(model, model.scene_speed_m_per_s, 0.0, x); });
-  const double t_ad = time_per_call([&] { rhs_jacobian_ad(model, model.scene_speed_m_per_s, 0.0, x); });
-  const double t_fd = time_per_call([&] { rhs_jacobian_forward_difference(model, model.scene_speed_m_per_s, 0.0, x); });
-  const double t_cd = time_per_call([&] { rhs_jacobian_central_difference(model, model.scene_speed_m_per_s, 0.0, x); });
+  const double t_rhs_frames = time_per_call([&] { xdot = rhs(model, scene.speed_m_per_s, 0.0, x); });
+  const double t_ad = time_per_call([&] { rhs_jacobian_ad(model, scene.speed_m_per_s, 0.0, x); });
+  const double t_fd = time_per_call([&] { rhs_jacobian_forward_difference(model, scene.speed_m_per_s, 0.0, x); });
+  const double t_cd = time_per_call([&] { rhs_jacobian_central_difference(model, scene.speed_m_per_s, 0.0, x); });
   std::printf("%s: %d bodies, %d states\n", model.name.c_str(), int(model.bodies.size()),
               model.state_size());
   std::printf("  rhs (workspace reused)    %10.2f us\n", t_rhs * 1e6);
@@ -52,7 +52,7 @@ void bench_scene(const std::string& path) {
 
   // Eigen-analysis at the steady state, dense vs ARPACK (16 modes near a
   // lightly damped 3 Hz), and a full critical-speed search.
-  const LinearModel lin = linearize(model, model.scene_speed_m_per_s, scene.equilibrium.state);
+  const LinearModel lin = linearize(model, scene.speed_m_per_s, scene.equilibrium.state);
   StabilityOptions arpack;
   arpack.solver = EigenSolverKind::arpack;
   const double t_dense = time_per_call([&] { eigen_dense(lin.A); });
@@ -75,7 +75,7 @@ void bench_scene(const std::string& path) {
   opt.t_end_s = 20.0;
   opt.output_interval_s = 0.01;
   const double cpu_start = bench::cpu_seconds();
-  const Trajectory traj = integrate(model, model.scene_speed_m_per_s, x, opt);
+  const Trajectory traj = integrate(model, scene.speed_m_per_s, x, opt);
   const double cpu_run = bench::cpu_seconds() - cpu_start;
   const double simulated = traj.times_s.back();
   std::printf("  20 s run (%s, rtol %.0e): CPU %.3f s (wall %.3f s), real-time factor %.1f (CPU), "

@@ -17,7 +17,7 @@ Trajectory run(const PreparedScene& scene, double t_end) {
   IntegrationOptions opt = integration_options_for(scene.spec.simulation);
   opt.t_end_s = t_end;
   opt.output_interval_s = 0.01;
-  return integrate(scene.model, scene.model.scene_speed_m_per_s, perturbed_initial_state(scene), opt);
+  return integrate(scene.model, scene.speed_m_per_s, perturbed_initial_state(scene), opt);
 }
 
 double max_abs_lateral(const PreparedScene& s, const Trajectory& traj, const std::string& body,

@@ -57,7 +57,7 @@ double vertical_contact_mode_real(const PreparedScene& s) {
   StabilityOptions so;
   so.max_frequency_hz = 1000.0;
   SpeedStability stability(s.model, s.equilibrium.state, s.speed_m_per_s, so);
-  const StabilityPoint p = stability.at(s.model.scene_speed_m_per_s);
+  const StabilityPoint p = stability.at(s.speed_m_per_s);
   double best = -INFINITY;
   for (const ModeReport& m : p.modes)
     if (m.frequency_hz > 100.0 && m.name.find("vertical") != std::string::npos)
@@ -89,8 +89,8 @@ TEST(ContactDamping, AdJacobianEqualsCentralDifferences) {
     if (coord == int(CoordinateIndex::y) || coord == int(CoordinateIndex::yaw)) x(k) += 2e-4;
   }
   x.tail(s.model.n_coordinates) += Eigen::VectorXd::Constant(s.model.n_coordinates, 1e-3);
-  const Eigen::MatrixXd ad = rhs_jacobian_ad(s.model, s.model.scene_speed_m_per_s, 0.3, x);
-  const Eigen::MatrixXd cd = rhs_jacobian_central_difference(s.model, s.model.scene_speed_m_per_s, 0.3, x);
+  const Eigen::MatrixXd ad = rhs_jacobian_ad(s.model, s.speed_m_per_s, 0.3, x);
+  const Eigen::MatrixXd cd = rhs_jacobian_central_difference(s.model, s.speed_m_per_s, 0.3, x);
   for (Eigen::Index r = 0; r < ad.rows(); ++r) {
     const double scale = std::max(ad.row(r).cwiseAbs().maxCoeff(), 1e-12);
     EXPECT_LT((ad.row(r) - cd.row(r)).cwiseAbs().maxCoeff(), 1e-6 * scale)
@@ -107,7 +107,7 @@ TEST(ContactDamping, AdJacobianEqualsCentralDifferences) {
 TEST(ContactDamping, VerifyInTheArcAboveTheCriticalSpeed) {
   const PreparedScene undamped = case_with_contact_damping("thesis_bogie_curve", 0.0, 40.0, 2000.0);
   try {
-    verify_least_stable_mode(undamped.model, undamped.model.scene_speed_m_per_s, undamped.equilibrium.state);
+    verify_least_stable_mode(undamped.model, undamped.speed_m_per_s, undamped.equilibrium.state);
     ADD_FAILURE() << "expected the undamped run to leave the steady state";
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("unstable mode(s) above the hunting band"),
@@ -115,7 +115,7 @@ TEST(ContactDamping, VerifyInTheArcAboveTheCriticalSpeed) {
         << e.what();
   }
   const PreparedScene damped = case_with_contact_damping("thesis_bogie_curve", 3e4, 40.0, 2000.0);
-  const VerificationResult r = verify_least_stable_mode(damped.model, damped.model.scene_speed_m_per_s, damped.equilibrium.state);
+  const VerificationResult r = verify_least_stable_mode(damped.model, damped.speed_m_per_s, damped.equilibrium.state);
   EXPECT_GT(r.fitted_real_per_s, 0.0);
   EXPECT_LT(r.frequency_difference_relative, 0.01);
   EXPECT_LT(r.real_difference_relative, 0.05);
@@ -148,7 +148,7 @@ TEST(ContactDamping, LiftOffEventWhereTheForceVanishes) {
   o.relative_tolerance = 1e-9;
   o.absolute_tolerance = 1e-12;
   o.stop_on_lift_off = true;
-  const Trajectory traj = integrate(s.model, s.model.scene_speed_m_per_s, perturbed_initial_state(s), o);
+  const Trajectory traj = integrate(s.model, s.speed_m_per_s, perturbed_initial_state(s), o);
   ASSERT_NE(traj.stopped_early.find("wheelset2 left wheel lost contact"), std::string::npos)
       << traj.stopped_early;
   EXPECT_GT(traj.times_s.back(), 1e-5);
@@ -156,7 +156,7 @@ TEST(ContactDamping, LiftOffEventWhereTheForceVanishes) {
   // At the stop: the left wheel of wheelset2 still penetrates, and its
   // unclipped normal force is zero to the root finder's resolution.
   EvaluationDetails d;
-  rhs(s.model, s.model.scene_speed_m_per_s, traj.times_s.back(), traj.states.back(), &d);
+  rhs(s.model, s.speed_m_per_s, traj.times_s.back(), traj.states.back(), &d);
   bool found = false;
   for (const ContactSnapshot& c : d.contacts) {
     if (s.model.bodies[size_t(c.body)].name != "wheelset2" || c.wheel.side != 1) continue;

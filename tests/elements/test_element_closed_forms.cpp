@@ -78,11 +78,12 @@ struct SeriesOscillator {
 
 TEST(SeriesSpringDamper, EigenvaluesSatisfyTheComplexStiffness) {
   const SeriesOscillator o;
-  const Model model = build_model(o.scene());
+  const SceneSpec spec = o.scene();
+  const Model model = build_model(spec);
   ASSERT_EQ(model.n_internal_states, 1);
   ASSERT_EQ(model.state_size(), 3);  // y, y', damper elongation
   EXPECT_EQ(model.state_name(2), "yaw_damper.damper_elongation_m");
-  const double V = model.scene_speed_m_per_s;
+  const double V = spec.speed_m_per_s;
   const EquilibriumResult eq = solve_equilibrium(model, V, nominal_state(model, V));
   const LinearModel lin = linearize(model, V, eq.state);
   ASSERT_EQ(lin.A.rows(), 3);
@@ -113,8 +114,9 @@ TEST(SeriesSpringDamper, EigenvaluesSatisfyTheComplexStiffness) {
 TEST(SeriesSpringDamper, LimitsOfTheSeriesStiffness) {
   SeriesOscillator stiff;
   stiff.k = 1e10;
-  const Model m1 = build_model(stiff.scene());
-  const double V = m1.scene_speed_m_per_s;
+  const SceneSpec stiff_spec = stiff.scene();
+  const Model m1 = build_model(stiff_spec);
+  const double V = stiff_spec.speed_m_per_s;
   const LinearModel lin1 = linearize(m1, V, nominal_state(m1, V));
   const double wn = std::sqrt(stiff.k0 / stiff.mass_kg);
   const double zeta = stiff.c / (2.0 * std::sqrt(stiff.k0 * stiff.mass_kg));
@@ -227,7 +229,7 @@ TEST(AntiRollBar, RollStiffnessIsTheBarsStiffness) {
   bar.link_half_spacing_m = 1.1;
   s.elements.push_back(bar);
   const Model model = build_model(s);
-  const double V = model.scene_speed_m_per_s;
+  const double V = s.speed_m_per_s;
   const LinearModel lin = linearize(model, V, nominal_state(model, V));
   ASSERT_EQ(lin.A.rows(), 2);
   const double omega = std::sqrt(2.5e6 / s.bodies[0].inertia_kg_m2.x());

@@ -48,11 +48,11 @@ struct ContactHistory {
   std::string first_loss;      // "wheelset2 left"
 };
 
-ContactHistory contact_history(const Model& model, const Trajectory& traj) {
+ContactHistory contact_history(const Model& model, double speed_m_per_s, const Trajectory& traj) {
   ContactHistory h;
   for (size_t i = 0; i < traj.states.size(); ++i) {
     EvaluationDetails d;
-    rhs(model, model.scene_speed_m_per_s, traj.times_s[i], traj.states[i], &d);
+    rhs(model, speed_m_per_s, traj.times_s[i], traj.states[i], &d);
     for (const ContactSnapshot& c : d.contacts) {
       h.min_normal_force_N = std::min(h.min_normal_force_N, c.wheel.normal_force_N);
       if (c.wheel.normal_force_N <= 0.0 && h.first_loss_s < 0.0) {
@@ -107,7 +107,7 @@ RunOutcome run_scene(const PreparedScene& scene, IntegrationOptions opt) {
   RunOutcome out;
   const auto start = std::chrono::steady_clock::now();
   try {
-    out.trajectory = integrate(scene.model, scene.model.scene_speed_m_per_s, perturbed_initial_state(scene), opt);
+    out.trajectory = integrate(scene.model, scene.speed_m_per_s, perturbed_initial_state(scene), opt);
   } catch (const std::exception& e) {
     out.error = e.what();
   }
@@ -246,7 +246,7 @@ TEST_P(ExtremeRun, CompletesFiniteOrStopsNamingTheCause) {
     EXPECT_LT(t_reached, c.t_end_s);
   }
 
-  const ContactHistory contact = contact_history(scene.model, traj);
+  const ContactHistory contact = contact_history(scene.model, scene.speed_m_per_s, traj);
   const std::vector<std::string> reported = reported_contact_losses(traj);
   std::printf("  %-24s %s at t = %.4g s (%.3f s wall incl. setup, %.3f s integration, %ld steps)"
               "%s%s; min wheel load %.4g N%s%s\n",
@@ -401,13 +401,13 @@ TEST(ExtremeEigen, TightCurveHasNoSteadyCurvingAndSaysSo) {
 // the axle, w_B . y_I = pitch' + sin(roll) yaw' on a tangent) along a
 // trajectory. With no moment about the axle and Jx = Jz it is constant
 // (Euler); pitch' alone is not (it trades with sin(roll) yaw').
-double max_spin_change(const Model& m, const Trajectory& traj) {
+double max_spin_change(const Model& m, double speed_m_per_s, const Trajectory& traj) {
   double change = 0.0;
   std::vector<double> first;
   for (size_t i = 0; i < traj.states.size(); ++i) {
     const double t = traj.times_s[i];
     Workspace<double> ws(m);
-    compute_all_body_motions<double>(m, ws, t, m.scene_speed_m_per_s, traj.states[i]);
+    compute_all_body_motions<double>(m, ws, t, speed_m_per_s, traj.states[i]);
     size_t w = 0;
     for (size_t b = 0; b < m.bodies.size(); ++b) {
       if (!m.bodies[b].wheelset()) continue;
@@ -430,7 +430,7 @@ TEST(ExtremeConservative, EnergyConservedOverSixtySeconds) {
   const double V = s.spec.speed_m_per_s;
   const Eigen::Vector3d observer(V, 0.0, 0.0);  // the track runs along W's x
   auto energy = [&](double t, const Eigen::VectorXd& x) {
-    return mechanical_energy(m, m.scene_speed_m_per_s, t, x, observer).total();  // includes the Hertz potential
+    return mechanical_energy(m, V, t, x, observer).total();  // includes the Hertz potential
   };
 
   // Linear check: |Re lambda| at round-off of ||A|| for every mode.
@@ -468,14 +468,14 @@ TEST(ExtremeConservative, EnergyConservedOverSixtySeconds) {
   const double perturbation = e0 - e_eq;
   ASSERT_GT(perturbation, 1.0) << "the scene's initial offset must store energy (J)";
   double drift = 0.0, exchange = 0.0;
-  const EnergyParts parts0 = mechanical_energy(m, m.scene_speed_m_per_s, 0.0, traj.states.front(), observer);
+  const EnergyParts parts0 = mechanical_energy(m, V, 0.0, traj.states.front(), observer);
   for (size_t i = 0; i < traj.states.size(); ++i) {
     const double e = energy(traj.times_s[i], traj.states[i]);
     drift = std::max(drift, std::abs(e - e0));
-    const EnergyParts parts = mechanical_energy(m, m.scene_speed_m_per_s, traj.times_s[i], traj.states[i], observer);
+    const EnergyParts parts = mechanical_energy(m, V, traj.times_s[i], traj.states[i], observer);
     exchange = std::max(exchange, std::abs(parts.elastic_J - parts0.elastic_J));
   }
-  const double spin_change = max_spin_change(m, traj);
+  const double spin_change = max_spin_change(m, V, traj);
   std::printf("  extreme_conservative: cvode_adams rtol 1e-9 over 60 s: %ld steps, %.2f s"
               " (%.2f s incl. setup); perturbation energy %.6g J, elastic exchange %.6g J,"
               " max |E - E0| = %.3g J = %.3g of the perturbation energy (%.3g of the total"

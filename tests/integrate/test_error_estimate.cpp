@@ -18,15 +18,15 @@ TEST(ErrorEstimate, TracksTheTrueErrorOfTheDefaultIntegrator) {
   IntegrationOptions opt = integration_options_for(scene.spec.simulation);
   opt.t_end_s = 3.0;
   ASSERT_EQ(opt.kind, IntegratorKind::arkode_dirk);  // the scene's default
-  const Trajectory run = integrate(scene.model, scene.model.scene_speed_m_per_s, x0, opt);
-  const ErrorEstimate e = estimate_integration_error(scene.model, scene.model.scene_speed_m_per_s, x0, opt, run);
+  const Trajectory run = integrate(scene.model, scene.speed_m_per_s, x0, opt);
+  const ErrorEstimate e = estimate_integration_error(scene.model, scene.speed_m_per_s, x0, opt, run);
 
   IntegrationOptions exact = opt;
   exact.kind = IntegratorKind::cvode_bdf;
   exact.order = 0;
   exact.relative_tolerance = 1e-10;
   exact.absolute_tolerance = 1e-13;
-  const Trajectory ref = integrate(scene.model, scene.model.scene_speed_m_per_s, x0, exact);
+  const Trajectory ref = integrate(scene.model, scene.speed_m_per_s, x0, exact);
   const double true_error = trajectory_position_error(scene.model, run, ref);
   std::printf("[error estimate] estimated %.3g, true %.3g (rtol %.0e)\n", e.position_error,
               true_error, opt.relative_tolerance);

@@ -18,7 +18,8 @@ using namespace railstab;
 
 namespace {
 
-Model oscillator() { return build_model(test::two_body_oscillator(test::straight_track(), 10.0)); }
+constexpr double kSpeed_m_per_s = 10.0;
+Model oscillator() { return build_model(test::two_body_oscillator(test::straight_track(), kSpeed_m_per_s)); }
 
 IntegrationOptions options(IntegratorKind kind, double t_end_s, double output_interval_s) {
   IntegrationOptions o;
@@ -45,11 +46,11 @@ TEST(SundialsFlagNames, AreFreedAfterEveryStepCall) {
   for (IntegratorKind kind :
        {IntegratorKind::cvode_bdf, IntegratorKind::arkode_erk, IntegratorKind::arkode_dirk}) {
     const IntegrationOptions o = options(kind, 20.0, 1e-3);
-    { const Trajectory warm_up = integrate(model, model.scene_speed_m_per_s, x0, o); }
+    { const Trajectory warm_up = integrate(model, kSpeed_m_per_s, x0, o); }
     const size_t before = heap_in_use();
     size_t outputs = 0;
     {
-      const Trajectory traj = integrate(model, model.scene_speed_m_per_s, x0, o);
+      const Trajectory traj = integrate(model, kSpeed_m_per_s, x0, o);
       outputs = traj.times_s.size();
     }
     const long growth = long(heap_in_use()) - long(before);
@@ -73,7 +74,7 @@ TEST(IntegrationLimits, OutputCountOverflowIsRefusedNamingTheSettings) {
                         Case{1.0, std::nan(""), "output interval"},
                         Case{1.0, 0.0, "output interval"}}) {
     try {
-      const Trajectory traj = integrate(model, model.scene_speed_m_per_s, x0, options(IntegratorKind::cvode_bdf, c.t_end,
+      const Trajectory traj = integrate(model, kSpeed_m_per_s, x0, options(IntegratorKind::cvode_bdf, c.t_end,
                                                            c.interval));
       ADD_FAILURE() << "t_end " << c.t_end << " interval " << c.interval << " ran to t = "
                     << traj.times_s.back();
@@ -88,7 +89,7 @@ TEST(IntegrationLimits, OutputCountOverflowIsRefusedNamingTheSettings) {
   IntegrationOptions o = options(IntegratorKind::cvode_bdf, 10.0, 1e-3);
   o.max_outputs = 1000;
   try {
-    integrate(model, model.scene_speed_m_per_s, x0, o);
+    integrate(model, kSpeed_m_per_s, x0, o);
     ADD_FAILURE() << "10,000 outputs accepted with max_outputs 1,000";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("would keep 10000 output states; at most 1000"),

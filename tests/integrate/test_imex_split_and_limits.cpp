@@ -51,7 +51,7 @@ TEST(ImexSplit, PartsAddUpAndTheStiffnessIsImplicit) {
   const double t = 0.37;
   ASSERT_EQ(implicit_rhs_callback(t, y, fi, &data), 0);
   ASSERT_EQ(explicit_rhs_callback(t, y, fe, &data), 0);
-  const Eigen::VectorXd f = rhs(model, model.scene_speed_m_per_s, t, x);
+  const Eigen::VectorXd f = rhs(model, scene.speed_m_per_s, t, x);
   const Eigen::VectorXd sum = as_eigen(fi) + as_eigen(fe);
   EXPECT_LT((sum - f).cwiseAbs().maxCoeff(), 1e-12 * f.cwiseAbs().maxCoeff());
   const int nq = model.n_coordinates;
@@ -63,7 +63,7 @@ TEST(ImexSplit, PartsAddUpAndTheStiffnessIsImplicit) {
   // The explicit part alone has no dq/dt = u (its Jacobian's eigenvalues are
   // only its damping's); what the explicit stages must resolve are the
   // oscillations of the suspension, i.e. kinematics + f_E.
-  const Eigen::MatrixXd J = rhs_jacobian_ad(model, model.scene_speed_m_per_s, t, x);
+  const Eigen::MatrixXd J = rhs_jacobian_ad(model, scene.speed_m_per_s, t, x);
   const Eigen::MatrixXd J_implicit = rhs_jacobian_ad(model, scene.speed_m_per_s, t, x,
                                                        ForceSelection::contact_and_inertia);
   Eigen::MatrixXd J_suspension = J - J_implicit;
@@ -79,7 +79,9 @@ TEST(ImexSplit, PartsAddUpAndTheStiffnessIsImplicit) {
 // A CPU budget or a step limit ends the run with IntegrationGaveUp (a
 // std::runtime_error), carrying the work done.
 TEST(WorkLimits, BudgetAndMaxStepsThrowGaveUp) {
-  const Model model = build_model(test::LateralOscillator{}.scene());
+  const SceneSpec spec = test::LateralOscillator{}.scene();
+  const Model model = build_model(spec);
+  const double V = spec.speed_m_per_s;
   IntegrationOptions o;
   o.kind = IntegratorKind::arkode_erk;
   o.t_end_s = 1e4;  // ~1e6 steps: far over the budget
@@ -88,7 +90,7 @@ TEST(WorkLimits, BudgetAndMaxStepsThrowGaveUp) {
   o.absolute_tolerance = 1e-13;
   o.cpu_time_budget_s = 0.05;
   try {
-    integrate(model, model.scene_speed_m_per_s, initial_state(model, model.scene_speed_m_per_s), o);
+    integrate(model, V, initial_state(model, V), o);
     FAIL() << "expected IntegrationGaveUp";
   } catch (const IntegrationGaveUp& e) {
     EXPECT_NE(std::string(e.what()).find("CPU time budget"), std::string::npos) << e.what();
@@ -100,7 +102,7 @@ TEST(WorkLimits, BudgetAndMaxStepsThrowGaveUp) {
   o.max_steps = 100;
   for (IntegratorKind k : all_integrator_kinds()) {
     o.kind = k;
-    EXPECT_THROW(integrate(model, model.scene_speed_m_per_s, initial_state(model, model.scene_speed_m_per_s), o), IntegrationGaveUp)
+    EXPECT_THROW(integrate(model, V, initial_state(model, V), o), IntegrationGaveUp)
         << integrator_name(k);
   }
 }

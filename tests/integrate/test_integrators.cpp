@@ -43,7 +43,8 @@ TEST_P(ClosedForm, LateralOscillatorMatchesExactSolution) {
   const OscillatorCase& c = GetParam();
   test::LateralOscillator osc;
   osc.damping_ratio = c.damping_ratio;
-  const Model model = build_model(osc.scene());
+  const SceneSpec spec = osc.scene();
+  const Model model = build_model(spec);
   ASSERT_EQ(model.state_size(), 2);
   IntegrationOptions opt;
   opt.kind = c.kind;
@@ -52,7 +53,7 @@ TEST_P(ClosedForm, LateralOscillatorMatchesExactSolution) {
   opt.output_interval_s = 0.01;
   opt.relative_tolerance = 1e-8;
   opt.absolute_tolerance = 1e-11;
-  const Trajectory traj = integrate(model, model.scene_speed_m_per_s, initial_state(model, model.scene_speed_m_per_s), opt);
+  const Trajectory traj = integrate(model, spec.speed_m_per_s, initial_state(model, spec.speed_m_per_s), opt);
   ASSERT_EQ(traj.times_s.size(), 201u);
   EXPECT_NEAR(traj.times_s.back(), 2.0, 1e-12);
   EXPECT_TRUE(traj.events.empty());
@@ -72,7 +73,8 @@ TEST_P(ClosedForm, ErrorFollowsTolerance) {
   const OscillatorCase& c = GetParam();
   test::LateralOscillator osc;
   osc.damping_ratio = c.damping_ratio;
-  const Model model = build_model(osc.scene());
+  const SceneSpec spec = osc.scene();
+  const Model model = build_model(spec);
   auto error_at = [&](double rtol) {
     IntegrationOptions opt;
     opt.kind = c.kind;
@@ -81,7 +83,7 @@ TEST_P(ClosedForm, ErrorFollowsTolerance) {
     opt.output_interval_s = 0.01;
     opt.relative_tolerance = rtol;
     opt.absolute_tolerance = rtol * 1e-3;
-    const Trajectory traj = integrate(model, model.scene_speed_m_per_s, initial_state(model, model.scene_speed_m_per_s), opt);
+    const Trajectory traj = integrate(model, spec.speed_m_per_s, initial_state(model, spec.speed_m_per_s), opt);
     double worst = 0.0;
     for (size_t i = 0; i < traj.times_s.size(); ++i)
       worst = std::max(worst, std::abs(traj.states[i](0) - osc.exact(traj.times_s[i])));

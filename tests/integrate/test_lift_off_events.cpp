@@ -22,10 +22,12 @@ namespace {
 // after ~0.16 ms; the undamped wheelset then bounces, its wheels losing and
 // regaining contact every few milliseconds.
 struct ThrownWheelset {
-  Model model;
+  SceneSpec spec = test::lone_knife_edge_wheelset();
+  double V = spec.speed_m_per_s;
+  Model model = build_model(spec);
   Eigen::VectorXd x0;
-  ThrownWheelset() : model(build_model(test::lone_knife_edge_wheelset())) {
-    x0 = solve_equilibrium(model, model.scene_speed_m_per_s, lowered_nominal_state(model, model.scene_speed_m_per_s)).state;
+  ThrownWheelset() {
+    x0 = solve_equilibrium(model, V, lowered_nominal_state(model, V)).state;
     const int n = model.n_coordinates;
     x0(n + model.bodies[0].state_index[int(CoordinateIndex::z)]) += 0.05;
     x0(n + model.bodies[0].state_index[int(CoordinateIndex::roll)]) += 0.1;
@@ -41,18 +43,18 @@ struct Crossing {
 // Zero crossings of each wheel's penetration (from rhs() details, not from
 // the integrator's root functions) in a fine-output tight-tolerance run,
 // located by linear interpolation between outputs 1 us apart.
-std::vector<Crossing> fine_crossings(const Model& model, const Eigen::VectorXd& x0, double t_end) {
+std::vector<Crossing> fine_crossings(const Model& model, double V, const Eigen::VectorXd& x0, double t_end) {
   IntegrationOptions o;
   o.t_end_s = t_end;
   o.output_interval_s = 1e-6;
   o.relative_tolerance = 1e-11;
   o.absolute_tolerance = 1e-14;
-  const Trajectory traj = integrate(model, model.scene_speed_m_per_s, x0, o);
+  const Trajectory traj = integrate(model, V, x0, o);
   std::vector<Crossing> out;
   std::vector<double> previous;
   for (size_t i = 0; i < traj.times_s.size(); ++i) {
     EvaluationDetails d;
-    rhs(model, model.scene_speed_m_per_s, traj.times_s[i], traj.states[i], &d);
+    rhs(model, V, traj.times_s[i], traj.states[i], &d);
     if (previous.empty()) previous.assign(d.contacts.size(), 0.0);
     for (size_t w = 0; w < d.contacts.size(); ++w) {
       const double p = d.contacts[w].wheel.penetration_m;
@@ -79,7 +81,7 @@ class LiftOff : public ::testing::TestWithParam<IntegratorKind> {};
 TEST_P(LiftOff, EventsAtThePenetrationZeroCrossings) {
   const ThrownWheelset w;
   const double t_end = 0.03;
-  const std::vector<Crossing> expected = fine_crossings(w.model, w.x0, t_end);
+  const std::vector<Crossing> expected = fine_crossings(w.model, w.V, w.x0, t_end);
   ASSERT_GE(expected.size(), 6u) << "the scene no longer bounces";
   ASSERT_EQ(expected.front().side, 1);
   ASSERT_TRUE(expected.front().lost);
@@ -90,7 +92,7 @@ TEST_P(LiftOff, EventsAtThePenetrationZeroCrossings) {
   o.output_interval_s = 0.01;
   o.relative_tolerance = 1e-8;
   o.absolute_tolerance = 1e-11;
-  const Trajectory traj = integrate(w.model, w.model.scene_speed_m_per_s, w.x0, o);
+  const Trajectory traj = integrate(w.model, w.V, w.x0, o);
   EXPECT_TRUE(traj.stopped_early.empty()) << traj.stopped_early;
   EXPECT_NEAR(traj.times_s.back(), t_end, 1e-12);  // lift-off does not end the run
   EXPECT_EQ(traj.times_s.size(), 4u);  // events add no output points
@@ -128,7 +130,7 @@ TEST(LiftOff, StopOnLiftOffEndsTheRunWithTheMessage) {
   o.relative_tolerance = 1e-8;
   o.absolute_tolerance = 1e-11;
   o.stop_on_lift_off = true;
-  const Trajectory traj = integrate(w.model, w.model.scene_speed_m_per_s, w.x0, o);
+  const Trajectory traj = integrate(w.model, w.V, w.x0, o);
   EXPECT_TRUE(std::regex_match(traj.stopped_early,
                                std::regex(R"(wheelset left wheel lost contact at t = [0-9.e+-]+ s)")))
       << traj.stopped_early;
@@ -139,7 +141,7 @@ TEST(LiftOff, StopOnLiftOffEndsTheRunWithTheMessage) {
   EXPECT_DOUBLE_EQ(traj.times_s.back(), traj.events.front().time_s);
   EXPECT_NEAR(traj.times_s.back(), 1.566e-4, 1e-7);
   EvaluationDetails d;
-  rhs(w.model, w.model.scene_speed_m_per_s, traj.times_s.back(), traj.states.back(), &d);
+  rhs(w.model, w.V, traj.times_s.back(), traj.states.back(), &d);
   EXPECT_NEAR(d.contacts[0].wheel.penetration_m, 0.0, 1e-12);
 }
 
@@ -156,9 +158,9 @@ TEST(LiftOff, WheelsOutOfContactAtTheStartAreReported) {
   w.x0.tail(n).setZero();
   w.x0(n + w.model.bodies[0].state_index[int(CoordinateIndex::pitch)]) =
       w.model.bodies[0].prescribed_rate(int(CoordinateIndex::pitch),
-                                        w.model.scene_speed_m_per_s);  // rolling at V
+                                        w.V);  // rolling at V
   EvaluationDetails d;
-  rhs(w.model, w.model.scene_speed_m_per_s, 0.0, w.x0, &d);
+  rhs(w.model, w.V, 0.0, w.x0, &d);
   const double fall_m = -d.contacts[0].wheel.penetration_m / std::cos(0.1);
   ASSERT_GT(fall_m, 9e-4);
   const double touch_down_s = std::sqrt(2.0 * fall_m / 9.81);
@@ -167,7 +169,7 @@ TEST(LiftOff, WheelsOutOfContactAtTheStartAreReported) {
   o.t_end_s = 0.05;
   o.relative_tolerance = 1e-10;
   o.absolute_tolerance = 1e-13;
-  const Trajectory free_fall = integrate(w.model, w.model.scene_speed_m_per_s, w.x0, o);
+  const Trajectory free_fall = integrate(w.model, w.V, w.x0, o);
   ASSERT_GE(free_fall.events.size(), 4u);
   EXPECT_EQ(free_fall.events[0].kind, ContactEvent::Kind::out_of_contact_at_start);
   EXPECT_EQ(free_fall.events[1].kind, ContactEvent::Kind::out_of_contact_at_start);
@@ -181,7 +183,7 @@ TEST(LiftOff, WheelsOutOfContactAtTheStartAreReported) {
   }
 
   o.stop_on_lift_off = true;
-  const Trajectory stopped = integrate(w.model, w.model.scene_speed_m_per_s, w.x0, o);
+  const Trajectory stopped = integrate(w.model, w.V, w.x0, o);
   EXPECT_EQ(stopped.stopped_early,
             "wheelset left wheel lost contact at t = 0 s (out of contact in the initial state)");
   EXPECT_EQ(stopped.times_s.size(), 1u);

@@ -155,8 +155,8 @@ TEST(HostileCsv, TrajectoryCsvWithHostileBodyNamesHasConsistentColumns) {
                  Eigen::VectorXd::Constant(model.state_size(), 1e-3)};
   for (int kind = 0; kind < 2; ++kind) {
     std::ostringstream out;
-    if (kind == 0) write_trajectory_csv(out, model, model.scene_speed_m_per_s, traj);
-    else write_absolute_roll_csv(out, model, model.scene_speed_m_per_s, traj);
+    if (kind == 0) write_trajectory_csv(out, model, spec.speed_m_per_s, traj);
+    else write_absolute_roll_csv(out, model, spec.speed_m_per_s, traj);
     const auto rows = test::parse_csv(out.str());
     ASSERT_TRUE(rows.has_value()) << out.str();
     ASSERT_EQ(rows->size(), 3u);
@@ -168,7 +168,7 @@ TEST(HostileCsv, TrajectoryCsvWithHostileBodyNamesHasConsistentColumns) {
   traj.states[1](0) = std::nan("");
   std::ostringstream out;
   try {
-    write_trajectory_csv(out, model, model.scene_speed_m_per_s, traj);
+    write_trajectory_csv(out, model, spec.speed_m_per_s, traj);
     FAIL();
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("at t = 0.1 s"), std::string::npos) << e.what();

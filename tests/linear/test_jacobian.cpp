@@ -23,8 +23,8 @@ TEST_P(JacobianOnCase, AdEqualsCentralDifferences) {
     const int c = scene.model.coordinate_of_state[k].second;
     if (c == int(CoordinateIndex::y) || c == int(CoordinateIndex::yaw)) x(k) += 2e-4;
   }
-  const Eigen::MatrixXd ad = rhs_jacobian_ad(scene.model, scene.model.scene_speed_m_per_s, 0.3, x);
-  const Eigen::MatrixXd cd = rhs_jacobian_central_difference(scene.model, scene.model.scene_speed_m_per_s, 0.3, x);
+  const Eigen::MatrixXd ad = rhs_jacobian_ad(scene.model, scene.speed_m_per_s, 0.3, x);
+  const Eigen::MatrixXd cd = rhs_jacobian_central_difference(scene.model, scene.speed_m_per_s, 0.3, x);
   for (Eigen::Index r = 0; r < ad.rows(); ++r) {
     const double scale = std::max(ad.row(r).cwiseAbs().maxCoeff(), 1e-12);
     const double err = (ad.row(r) - cd.row(r)).cwiseAbs().maxCoeff();

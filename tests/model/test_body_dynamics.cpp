@@ -39,7 +39,7 @@ TEST(BodyDynamics, FreeBodyOnTangentKeepsConstantVelocity) {
   s.bodies.push_back(test::rigid_body("body", 0.0, 1.0));
   s.bodies[0].initial_rate = {0.3, -0.2, 0.1, 0.0, 0.0, 0.0};
   const Model model = build_model(s);
-  const Trajectory traj = integrate(model, model.scene_speed_m_per_s, initial_state(model, model.scene_speed_m_per_s), tight(2.0));
+  const Trajectory traj = integrate(model, s.speed_m_per_s, initial_state(model, s.speed_m_per_s), tight(2.0));
   const Eigen::VectorXd& x = traj.states.back();
   const double t = traj.times_s.back();
   // relative position = initial + rate t (tolerance: 1e-8 m, integrator rtol 1e-10)
@@ -60,10 +60,10 @@ TEST(BodyDynamics, TorqueFreeRotationConservesEnergy) {
   s.bodies.push_back(test::rigid_body("body", 0.0, 1.0));
   s.bodies[0].initial_rate = {0.0, 0.0, 0.0, 0.05, 0.3, 0.08};
   const Model model = build_model(s);
-  const Trajectory traj = integrate(model, model.scene_speed_m_per_s, initial_state(model, model.scene_speed_m_per_s), tight(3.0));
-  const double e0 = mechanical_energy(model, model.scene_speed_m_per_s, 0.0, traj.states.front()).total();
+  const Trajectory traj = integrate(model, s.speed_m_per_s, initial_state(model, s.speed_m_per_s), tight(3.0));
+  const double e0 = mechanical_energy(model, s.speed_m_per_s, 0.0, traj.states.front()).total();
   for (size_t i = 0; i < traj.states.size(); ++i) {
-    const double e = mechanical_energy(model, model.scene_speed_m_per_s, traj.times_s[i], traj.states[i]).total();
+    const double e = mechanical_energy(model, s.speed_m_per_s, traj.times_s[i], traj.states[i]).total();
     EXPECT_NEAR(e, e0, 1e-7 * std::abs(e0)) << "t = " << traj.times_s[i];
   }
 }
@@ -78,12 +78,12 @@ TEST(BodyDynamics, UndampedSpringsConserveEnergyOnTangentTrack) {
   const Model model = build_model(s);
   IntegrationOptions opt = tight(2.0);
   opt.kind = IntegratorKind::cvode_adams;  // BDF damps oscillations numerically
-  const Trajectory traj = integrate(model, model.scene_speed_m_per_s, initial_state(model, model.scene_speed_m_per_s), opt);
+  const Trajectory traj = integrate(model, s.speed_m_per_s, initial_state(model, s.speed_m_per_s), opt);
   const Eigen::Vector3d observer(20.0, 0.0, 0.0);  // track along W's x
-  const EnergyParts e0 = mechanical_energy(model, model.scene_speed_m_per_s, 0.0, traj.states.front(), observer);
+  const EnergyParts e0 = mechanical_energy(model, s.speed_m_per_s, 0.0, traj.states.front(), observer);
   double max_exchange = 0.0;
   for (size_t i = 0; i < traj.states.size(); ++i) {
-    const EnergyParts e = mechanical_energy(model, model.scene_speed_m_per_s, traj.times_s[i], traj.states[i], observer);
+    const EnergyParts e = mechanical_energy(model, s.speed_m_per_s, traj.times_s[i], traj.states[i], observer);
     max_exchange = std::max(max_exchange, std::abs(e.elastic_J - e0.elastic_J));
     // BDF at rtol 1e-10 drifts ~1e-9 relative over these 2 s; a wrong force
     // or moment (as anchors' work in W) shows up at 1e-1 relative.
@@ -95,13 +95,14 @@ TEST(BodyDynamics, UndampedSpringsConserveEnergyOnTangentTrack) {
 // The result relative to the track does not depend on where the fixed frame
 // is put: moving and turning the whole track leaves all coordinates equal.
 TEST(BodyDynamics, CurveResultIndependentOfFixedFrame) {
-  const Model m1 = build_model(test::two_body_oscillator(test::curved_track(300.0, 0.1), 25.0));
+  const double V = 25.0;
+  const Model m1 = build_model(test::two_body_oscillator(test::curved_track(300.0, 0.1), V));
   const Model m2 = build_model(
-      test::two_body_oscillator(test::curved_track(300.0, 0.1, 1.1, -350.0, 2200.0), 25.0));
-  Eigen::VectorXd x0 = initial_state(m1, m1.scene_speed_m_per_s);
+      test::two_body_oscillator(test::curved_track(300.0, 0.1, 1.1, -350.0, 2200.0), V));
+  Eigen::VectorXd x0 = initial_state(m1, V);
   x0(1) += 0.01;
-  const Trajectory t1 = integrate(m1, m1.scene_speed_m_per_s, x0, tight(8.0));
-  const Trajectory t2 = integrate(m2, m2.scene_speed_m_per_s, x0, tight(8.0));
+  const Trajectory t1 = integrate(m1, V, x0, tight(8.0));
+  const Trajectory t2 = integrate(m2, V, x0, tight(8.0));
   // 8 s covers tangent, clothoid and arc. 1e-7 against motions of ~1e-2.
   EXPECT_LT((t1.states.back() - t2.states.back()).cwiseAbs().maxCoeff(), 1e-7);
   EXPECT_GT((t1.states.back() - x0).cwiseAbs().maxCoeff(), 1e-3);

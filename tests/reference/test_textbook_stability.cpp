@@ -4,7 +4,7 @@
 // and hunting frequency.
 //
 // Every check runs at two linearisation points:
-//  - ExactEquilibrium: rhs_jacobian_ad(model, model.scene_speed_m_per_s, 0, equilibrium.state), the
+//  - ExactEquilibrium: rhs_jacobian_ad(model, V, 0, equilibrium.state), the
 //    product path of a stability analysis;
 //  - TinyOffset: the equilibrium with every free coordinate moved by ~1e-8
 //    (m or rad). All free states are odd under the lateral mirror, so the
@@ -87,7 +87,7 @@ RailstabLinearisation railstab_state_matrix(const std::string& path, double V,
   if (point == Point::tiny_offset) {
     for (int k = 0; k < n; ++k) x(k) += 1e-8 * (1.0 + 0.37 * k);
     // No acceleration may vanish exactly (that is what the offset is for).
-    const Eigen::VectorXd xdot = rhs(model, model.scene_speed_m_per_s, 0.0, x);
+    const Eigen::VectorXd xdot = rhs(model, s.speed_m_per_s, 0.0, x);
     for (int k = 0; k < n; ++k)
       if (xdot(n + k) == 0.0)
         throw std::runtime_error("tiny offset: zero acceleration of " + model.state_name(n + k));
@@ -104,7 +104,7 @@ RailstabLinearisation railstab_state_matrix(const std::string& path, double V,
   }
   std::vector<int> index = q_index;
   for (int k : q_index) index.push_back(n + k);
-  const Eigen::MatrixXd full = rhs_jacobian_ad(model, model.scene_speed_m_per_s, 0.0, x);
+  const Eigen::MatrixXd full = rhs_jacobian_ad(model, s.speed_m_per_s, 0.0, x);
   RailstabLinearisation out;
   out.A = full(index, index);
   out.dropped_states = 2 * n - int(index.size());

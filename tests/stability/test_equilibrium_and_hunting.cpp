@@ -38,7 +38,7 @@ TEST(Equilibrium, SymmetricVehicleOnTangent) {
     EXPECT_NEAR(q6(5, b), 0.0, 1e-12) << m.bodies[b].name;  // yaw, rad
   }
   EvaluationDetails d;
-  rhs(m, m.scene_speed_m_per_s, 0.0, s.equilibrium.state, &d);
+  rhs(m, s.speed_m_per_s, 0.0, s.equilibrium.state, &d);
   double vertical = 0.0;
   for (size_t i = 0; i + 1 < d.contacts.size(); i += 2) {
     const auto& left = d.contacts[i].wheel;
@@ -68,8 +68,9 @@ double knife_edge_effective_conicity() {
 // shift it; at 5 m/s and R = 1000 m they stay well within 1 %.
 TEST(Equilibrium, FreeWheelsetInArcNearPureRollingShift) {
   const double R = 1000.0;
-  const Model m = build_model(test::lone_knife_edge_wheelset(5.0, arc_track(R)));
-  const EquilibriumResult eq = solve_equilibrium(m, m.scene_speed_m_per_s, lowered_nominal_state(m, m.scene_speed_m_per_s));
+  const double V = 5.0;
+  const Model m = build_model(test::lone_knife_edge_wheelset(V, arc_track(R)));
+  const EquilibriumResult eq = solve_equilibrium(m, V, lowered_nominal_state(m, V));
   const double y0 = 0.45 * 0.75 / (knife_edge_effective_conicity() * R);
   const double y = eq.state(m.bodies[0].state_index[1]);
   std::printf("free wheelset in R = %.0f m arc: y = %.4f mm, pure rolling %.4f mm\n", R, y * 1e3,
@@ -81,9 +82,10 @@ TEST(Equilibrium, FreeWheelsetInArcNearPureRollingShift) {
 // A scene with no equilibrium fails with a clear message: 150 m/s in an
 // unbanked 150 m curve (15 g lateral) lifts the wheelset off the rails.
 TEST(Equilibrium, NoEquilibriumGivesClearError) {
-  const Model m = build_model(test::lone_knife_edge_wheelset(150.0, arc_track(150.0)));
+  const double V = 150.0;
+  const Model m = build_model(test::lone_knife_edge_wheelset(V, arc_track(150.0)));
   try {
-    solve_equilibrium(m, m.scene_speed_m_per_s, lowered_nominal_state(m, m.scene_speed_m_per_s));
+    solve_equilibrium(m, V, lowered_nominal_state(m, V));
     FAIL() << "expected no equilibrium";
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("no equilibrium"), std::string::npos) << e.what();
@@ -103,10 +105,11 @@ TEST(Equilibrium, NoEquilibriumGivesClearError) {
 TEST(Hunting, KnifeEdgeWheelsetApproachesKlingel) {
   TrackSpec straight;
   straight.segments.push_back({TrackSegmentKind::tangent, 2000.0, 0.0, 0.0});
-  const Model m = build_model(test::lone_knife_edge_wheelset(2.0, straight));
-  const EquilibriumResult eq = solve_equilibrium(m, m.scene_speed_m_per_s, lowered_nominal_state(m, m.scene_speed_m_per_s));
-  SpeedStability stability(m, eq.state, m.scene_speed_m_per_s);
-  const StabilityPoint p = stability.at(2.0);
+  const double V = 2.0;
+  const Model m = build_model(test::lone_knife_edge_wheelset(V, straight));
+  const EquilibriumResult eq = solve_equilibrium(m, V, lowered_nominal_state(m, V));
+  SpeedStability stability(m, eq.state, V);
+  const StabilityPoint p = stability.at(V);
   // the kinematic mode: the oscillatory mode below 1 Hz
   double f = 0.0;
   for (const ModeReport& mode : p.modes)

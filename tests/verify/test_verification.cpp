@@ -35,7 +35,7 @@ TEST(Verification, ThesisBogieMatchesEigenvalue) {
   for (double v : {20.0, 38.0}) {
     const PreparedScene s = prepare_scene(std::string(RAILSTAB_CASES_DIR) +
                                               "/thesis_bogie_tangent.toml", {v, {}, {}, {}});
-    const VerificationResult r = verify_least_stable_mode(s.model, s.model.scene_speed_m_per_s, s.equilibrium.state);
+    const VerificationResult r = verify_least_stable_mode(s.model, s.speed_m_per_s, s.equilibrium.state);
     EXPECT_LT(r.frequency_difference_relative, 0.01) << v;
     EXPECT_LT(r.real_difference_relative, 0.05) << v;
     EXPECT_EQ(r.fitted_real_per_s > 0.0, v > 36.9) << v;  // grows above V_crit = 36.90 m/s
@@ -50,7 +50,7 @@ TEST(Verification, ThesisVehicleMatchesEigenvalue) {
   for (double v : {110.0, 115.0}) {
     const PreparedScene s = prepare_scene(std::string(RAILSTAB_CASES_DIR) +
                                               "/thesis_vehicle_tangent.toml", {v, {}, {}, {}});
-    const VerificationResult r = verify_least_stable_mode(s.model, s.model.scene_speed_m_per_s, s.equilibrium.state);
+    const VerificationResult r = verify_least_stable_mode(s.model, s.speed_m_per_s, s.equilibrium.state);
     EXPECT_LT(r.frequency_difference_relative, 0.01) << v;
     EXPECT_LT(r.real_difference_relative, 0.05) << v;
     EXPECT_EQ(r.fitted_real_per_s > 0.0, v > 111.46) << v;
@@ -68,7 +68,7 @@ TEST(Verification, RefusesToRunOffTheUniformTrack) {
   const PreparedScene s = prepare_scene(std::string(RAILSTAB_CASES_DIR) +
                                             "/thesis_vehicle_tangent.toml", {100.0, {}, {}, {}});
   try {
-    verify_least_stable_mode(s.model, s.model.scene_speed_m_per_s, s.equilibrium.state);
+    verify_least_stable_mode(s.model, s.speed_m_per_s, s.equilibrium.state);
     FAIL() << "expected an error";
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("leaves the uniform stretch of track"), std::string::npos)
@@ -76,7 +76,7 @@ TEST(Verification, RefusesToRunOffTheUniformTrack) {
   }
   VerificationOptions o;
   o.settle_periods = 1.0;
-  const VerificationResult r = verify_least_stable_mode(s.model, s.model.scene_speed_m_per_s, s.equilibrium.state, o);
+  const VerificationResult r = verify_least_stable_mode(s.model, s.speed_m_per_s, s.equilibrium.state, o);
   EXPECT_TRUE(r.track_limited);
   EXPECT_NEAR(r.eigen_frequency_hz, 0.417, 0.001);
   EXPECT_LT(r.frequency_difference_relative, 0.01);
@@ -94,7 +94,7 @@ TEST(Verification, FromTheSceneOffsetsMeetsTheTargets) {
                                               "/thesis_bogie_tangent.toml", {v, {}, {}, {}});
     VerificationOptions o;
     o.initial_state = perturbed_initial_state(s);
-    const VerificationResult r = verify_least_stable_mode(s.model, s.model.scene_speed_m_per_s, s.equilibrium.state, o);
+    const VerificationResult r = verify_least_stable_mode(s.model, s.speed_m_per_s, s.equilibrium.state, o);
     EXPECT_EQ(r.start, "given initial state");
     EXPECT_LT(r.frequency_difference_relative, 0.01) << v;
     EXPECT_LT(r.real_difference_relative, 0.05) << v;
@@ -117,7 +117,7 @@ TEST(Verification, ProfileBogieMatchesEigenvalueInItsLinearRange) {
     VerificationOptions o;
     o.amplitude_m = 1e-5;
     const VerificationResult r =
-        verify_least_stable_mode(s.model, s.model.scene_speed_m_per_s, s.equilibrium.state, o);
+        verify_least_stable_mode(s.model, s.speed_m_per_s, s.equilibrium.state, o);
     EXPECT_LT(r.frequency_difference_relative, 0.005) << v;
     EXPECT_LT(r.real_difference_relative, 0.02) << v;
     EXPECT_LT(r.fitted_real_per_s, 0.0) << v;

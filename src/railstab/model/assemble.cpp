@@ -47,7 +47,6 @@ Model assemble_model(const SceneSpec& scene, const std::vector<Eigen::Vector3d>&
   model.name = scene.name;
   model.source_path = scene.source_path;
   model.source_sha256 = scene.source_sha256;
-  model.scene_speed_m_per_s = scene.speed_m_per_s;
   model.gravity_m_per_s2 = scene.gravity_m_per_s2;
   model.reference_arc_length_m = scene.reference_arc_length_m;
 

@@ -41,7 +41,6 @@ template <class S> struct ModelTpl {
   std::string source_path;
   std::string source_sha256;  // of the scene file as read (SceneSpec::source_sha256)
   Track track;
-  double scene_speed_m_per_s = 0.0;  // the scene's speed: the default of commands
   double gravity_m_per_s2 = 9.81;
   double reference_arc_length_m = 0.0;
   // dV/dt of time-domain runs (m/s^2; < 0 decelerates); 0: constant speed.
@@ -120,7 +119,6 @@ template <class S> struct ModelTpl {
     m.name = name;
     m.source_path = source_path;
     m.source_sha256 = source_sha256;
-    m.scene_speed_m_per_s = scene_speed_m_per_s;
     m.gravity_m_per_s2 = gravity_m_per_s2;
     m.reference_arc_length_m = reference_arc_length_m;
     m.speed_rate_m_per_s2 = speed_rate_m_per_s2;
