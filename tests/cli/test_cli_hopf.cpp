@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "cli/run_cli.hpp"
+#include "support/json_text.hpp"
 #include "support/test_files.hpp"
 
 #include <railstab/nonlinear/hopf_assessment.hpp>
@@ -20,18 +21,7 @@
 
 namespace fs = std::filesystem;
 using namespace railstab;
-
-namespace {
-
-// The text after "key": up to the next comma or newline.
-std::string json_value(const std::string& json, const std::string& key) {
-  const std::regex re("\"" + key + "\": ([^,\\n]*)");
-  std::smatch m;
-  if (!std::regex_search(json, m, re)) return "<missing>";
-  return m[1].str();
-}
-
-}  // namespace
+using railstab::test::json_value;
 
 TEST(CliHopf, CriticalSpeedJsonCarriesTheLibrarysFirstLyapunovCoefficient) {
   const std::string scene = std::string(RAILSTAB_CASES_DIR) + "/thesis_bogie_tangent.toml";

@@ -6,6 +6,7 @@
 
 #include "cli/run_cli.hpp"
 #include "io/format_checks.hpp"
+#include "support/json_text.hpp"
 #include "support/test_files.hpp"
 
 #include <railstab/setup/prepare_scene.hpp>
@@ -16,17 +17,7 @@
 
 namespace fs = std::filesystem;
 using namespace railstab;
-
-namespace {
-
-std::string json_value(const std::string& json, const std::string& key) {
-  const std::regex re("\"" + key + "\": ([^,\\n]*)");
-  std::smatch m;
-  if (!std::regex_search(json, m, re)) return "<missing>";
-  return m[1].str();
-}
-
-}  // namespace
+using railstab::test::json_value;
 
 TEST(CliQuasiLinear, AmplitudeRunWritesTheQuasiLinearCriticalSpeed) {
   const std::string scene = test::case_path("thesis_bogie_s1002_tangent");

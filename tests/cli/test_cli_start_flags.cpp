@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "cli/run_cli.hpp"
+#include "support/json_text.hpp"
 #include "support/test_files.hpp"
 
 #include <algorithm>
@@ -12,16 +13,11 @@
 
 namespace fs = std::filesystem;
 using namespace railstab;
+using railstab::test::json_value;
 
 namespace {
 
 const std::string kBogie = test::case_path("thesis_bogie_tangent");
-
-std::string json_value(const std::string& json, const std::string& key) {
-  const std::regex re("\"" + key + "\": ([^,\\n]+)");
-  std::smatch m;
-  return std::regex_search(json, m, re) ? m[1].str() : "<missing>";
-}
 
 }  // namespace
 

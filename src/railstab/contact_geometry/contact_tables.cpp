@@ -71,12 +71,22 @@ ContactPoint direct_slot_contact(const ProfilePair& pair, const ContactTable& ta
   return minimum_gap_in_wheel_range(pair, pose, u_min, u_max);
 }
 
-ContactTable make_contact_table(const ProfilePair& pair, const ContactTableOptions& o) {
+namespace {
+
+// The grid a table is sampled on: positive steps, at least two lateral steps
+// and one roll step to each side of the centre.
+void check_table_grid(const ContactTableOptions& o, const char* who) {
   if (!(o.lateral_step_m > 0 && o.lateral_half_range_m >= 2 * o.lateral_step_m &&
         o.roll_step_rad > 0 && o.roll_half_range_rad >= o.roll_step_rad))
-    throw std::invalid_argument(
-        "make_contact_table: expected positive steps and half ranges of at least two lateral "
-        "steps and one roll step");
+    throw std::invalid_argument(std::string(who) +
+                                ": expected positive steps and half ranges of at least two "
+                                "lateral steps and one roll step");
+}
+
+}  // namespace
+
+ContactTable make_contact_table(const ProfilePair& pair, const ContactTableOptions& o) {
+  check_table_grid(o, "make_contact_table");
   ContactTable t;
   t.options_ = o;
   t.nominal_lateral_m_ = pair.nominal_wheel_lateral_m();
@@ -130,11 +140,7 @@ ContactTable make_contact_table(const ProfilePair& pair, const ContactTableOptio
 ContactTable ContactTable::plane_table(const ContactTableOptions& o, double nominal_lateral_m,
                                        double q_c, double theta_c,
                                        const std::array<Plane, kTableQuantities>& planes) {
-  if (!(o.lateral_step_m > 0 && o.lateral_half_range_m >= 2 * o.lateral_step_m &&
-        o.roll_step_rad > 0 && o.roll_half_range_rad >= o.roll_step_rad))
-    throw std::invalid_argument(
-        "ContactTable::plane_table: expected positive steps and half ranges of at least two "
-        "lateral steps and one roll step");
+  check_table_grid(o, "ContactTable::plane_table");
   ContactTable t;
   t.options_ = o;
   t.nominal_lateral_m_ = nominal_lateral_m;
