@@ -1,5 +1,7 @@
 #include <railstab/stability/quasi_linear_critical_speed.hpp>
 
+#include <railstab/stability/verdict.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <ctime>
@@ -131,9 +133,11 @@ QuasiLinearCurve quasi_linear_critical_speed_curve(
         p.mode = c.modes[size_t(c.least_stable)].name;
       }
     }
+    // No speed: the verdict's own words (stability/verdict.hpp), which also
+    // tell "stable up to where the steady state was lost" from "stable over
+    // the whole range".
     if (r.partial) p.note = r.partial_reason;
-    else if (r.unstable_at_start) p.note = "unstable at the lowest speed";
-    else if (r.stable_in_range) p.note = "stable over the whole range";
+    else if (!r.critical_speed_found) p.note = verdict_sentence(r);
     curve.points.push_back(std::move(p));
     if (progress) progress(i + 1, n, A);
   }

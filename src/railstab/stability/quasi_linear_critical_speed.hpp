@@ -98,7 +98,7 @@ struct QuasiLinearCurvePoint {
   double critical_speed_m_per_s = 0;
   double frequency_Hz = 0;         // of the crossing mode at V_c
   std::string mode;                // its name
-  std::string note;                // why no speed (partial, no steady state), else empty
+  std::string note;                // why no speed: the partial reason or the verdict sentence; else empty
 };
 struct QuasiLinearCurve {
   std::vector<QuasiLinearCurvePoint> points;
