@@ -155,7 +155,7 @@ int profile_run(const std::string& cases_dir, int cars) {
   const BandEigenResult band = eigen_sparse_band(lin.A_sparse, BandCoverOptions{});
   const double eig_s = cpu_seconds() - t0;
   t0 = cpu_seconds();
-  const std::vector<ModeReport> modes = describe_modes(model, lin, band.pairs);
+  const std::vector<ModeReport> modes = describe_modes(model, lin, band.pairs, V);
   const double describe_s = cpu_seconds() - t0;
   t0 = cpu_seconds();
   const StabilityPoint whole = sweep.at(V);

@@ -43,7 +43,7 @@ LinearModel linear_model(const SceneSpec& scene) {
 // critical speed) and its right eigenvector.
 EigenPair hunting_pair(const Model& model, const LinearModel& lin) {
   const std::vector<EigenPair> pairs = eigen_dense(lin.A);
-  const std::vector<ModeReport> modes = describe_modes(model, lin, pairs);
+  const std::vector<ModeReport> modes = describe_modes(model, lin, pairs, kSpeed);
   const int i = least_stable_lateral_mode(modes, 20.0);
   EXPECT_GE(i, 0);
   return pairs[size_t(std::max(i, 0))];

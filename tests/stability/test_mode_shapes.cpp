@@ -59,7 +59,7 @@ Linearised linearise(const SceneSpec& spec) {
   const double v = spec.speed_m_per_s;
   const EquilibriumResult eq = solve_equilibrium(model, v, initial_state(model, v));
   LinearModel lin = linearize(model, v, eq.state);
-  std::vector<ModeReport> modes = describe_modes(model, lin, eigen_dense(lin.A));
+  std::vector<ModeReport> modes = describe_modes(model, lin, eigen_dense(lin.A), v);
   Eigen::MatrixXd K = suspension_stiffness(model, v, 0.0, eq.state);
   return {std::move(model), eq.state, std::move(lin), std::move(modes), std::move(K)};
 }
@@ -233,7 +233,7 @@ TEST(ModeShape, DescribeModesShortcutsMatchThePlainComputation) {
       prepare_scene(std::string(RAILSTAB_CASES_DIR) + "/thesis_vehicle_tangent.toml", {});
   const LinearModel lin = linearize(s.model, s.speed_m_per_s, s.equilibrium.state);
   const std::vector<EigenPair> pairs = eigen_dense(lin.A);
-  const std::vector<ModeReport> modes = describe_modes(s.model, lin, pairs);
+  const std::vector<ModeReport> modes = describe_modes(s.model, lin, pairs, s.speed_m_per_s);
   const std::vector<ModeShape> shapes = describe_mode_shapes(s.model, lin, pairs);
   ASSERT_EQ(modes.size(), pairs.size());
   ASSERT_EQ(shapes.size(), pairs.size());

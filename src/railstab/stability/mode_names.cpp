@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <sstream>
 
 namespace railstab {
 
@@ -59,10 +60,71 @@ std::string car_body_motion(const std::array<double, 6>& e, std::complex<double>
   return roll_centre_height > 0.0 ? "lower sway" : "upper sway";
 }
 
+// Kinematic hunting (rule 3): psi / y = i omega / V on the wheelset with the
+// most lateral + yaw energy, within the phase and ratio tolerances. z is
+// psi / y over i omega / V, so z = 1 exactly for a rolling wheelset; the sign
+// of omega is kept, so a conjugate shape (Im lambda < 0) judges the same.
+bool kinematic_hunting(const BodyRoles& roles, const std::vector<std::array<double, 6>>& e,
+                       const std::vector<std::array<std::complex<double>, 6>>& q,
+                       std::complex<double> lambda, double speed_m_per_s) {
+  if (!(speed_m_per_s > 0.0) || lambda.imag() == 0.0) return false;
+  int w = -1;
+  for (size_t b = 0; b < e.size(); ++b)
+    if (roles.role[b] == BodyRole::wheelset &&
+        (w < 0 || e[b][1] + e[b][5] > e[size_t(w)][1] + e[size_t(w)][5]))
+      w = int(b);
+  if (w < 0) return false;
+  const std::complex<double> y = q[size_t(w)][1], psi = q[size_t(w)][5];
+  if (std::abs(y) == 0.0 || std::abs(psi) == 0.0) return false;
+  const std::complex<double> z =
+      (psi / y) / std::complex<double>(0.0, lambda.imag() / speed_m_per_s);
+  const double phase_deg = std::abs(std::arg(z)) * 180.0 / M_PI;
+  return phase_deg <= kKinematicPhaseToleranceDeg && std::abs(z) >= 1.0 / kKinematicRatioFactor &&
+         std::abs(z) <= kKinematicRatioFactor;
+}
+
+// The phase words of two units (rule 3): a first in scene order.
+std::string phase_words(const Model& model, size_t a, size_t b, std::complex<double> qa,
+                        std::complex<double> qb, std::complex<double> lambda,
+                        const std::string& plural) {
+  if (a > b) {
+    std::swap(a, b);
+    std::swap(qa, qb);
+  }
+  double theta = std::arg(std::conj(qa) * qb) * 180.0 / M_PI;
+  if (lambda.imag() < 0.0) theta = -theta;  // the conjugate shape: the same motion
+  if (std::abs(theta) <= kPhaseToleranceDeg) return plural + " in phase";
+  if (std::abs(theta) >= 180.0 - kPhaseToleranceDeg) return plural + " anti-phase";
+  const int rounded = int(std::lround(std::abs(theta) / 10.0)) * 10;
+  return model.bodies[b].name + " " + std::to_string(rounded) + " deg " +
+         (theta < 0.0 ? "behind " : "ahead of ") + model.bodies[a].name;
+}
+
 }  // namespace
 
+std::string dominant_body(const Model& model, const ModeShape& shape) {
+  std::vector<double> energy(model.bodies.size(), 0.0);
+  for (const CoordinateMotion& c : shape.coordinates) energy[size_t(c.body)] += c.kinetic_share;
+  if (energy.empty()) return "";
+  const size_t best = size_t(std::max_element(energy.begin(), energy.end()) - energy.begin());
+  return energy[best] > 0.0 ? model.bodies[best].name : "";
+}
+
+std::vector<std::string> mode_qualifiers(const std::string& body, std::complex<double> lambda) {
+  std::vector<std::string> q;
+  if (!body.empty()) q.push_back("mostly " + body);
+  std::ostringstream f;
+  f.precision(3);
+  if (lambda.imag() != 0.0)
+    f << std::abs(lambda.imag()) / (2.0 * M_PI) << " Hz";
+  else
+    f << "rate " << lambda.real() << " 1/s";
+  q.push_back(f.str());
+  return q;
+}
+
 std::string mode_name_from_shape(const Model& model, const BodyRoles& roles, const ModeShape& shape,
-                                 std::complex<double> lambda) {
+                                 std::complex<double> lambda, double speed_m_per_s) {
   const size_t nb = model.bodies.size();
   std::vector<std::array<double, 6>> e(nb, std::array<double, 6>{});
   std::vector<std::array<std::complex<double>, 6>> q(nb, std::array<std::complex<double>, 6>{});
@@ -93,6 +155,7 @@ std::string mode_name_from_shape(const Model& model, const BodyRoles& roles, con
       if (roles.role[b] != BodyRole::car_body)
         for (int c = 0; c < 6; ++c) motion[gear_motion(roles.role[b], c)] += e[b][size_t(c)];
     const Motion m = Motion(std::max_element(motion.begin(), motion.end()) - motion.begin());
+    const bool kinematic = m == hunting_motion && kinematic_hunting(roles, e, q, lambda, speed_m_per_s);
     // Units by energy.
     std::map<int, double> unit_energy;
     for (size_t b = 0; b < nb; ++b)
@@ -102,7 +165,7 @@ std::string mode_name_from_shape(const Model& model, const BodyRoles& roles, con
     std::sort(units.rbegin(), units.rend());
     auto motion_word = [&](bool on_wheelset) -> std::string {
       switch (m) {
-        case hunting_motion: return oscillatory ? "hunting" : "lateral/yaw";
+        case hunting_motion: return kinematic ? "hunting" : "lateral/yaw";
         case roll_motion: return "roll";
         case vertical_motion: return on_wheelset ? "vertical" : "bounce";
         case pitch_motion: return "pitch";
@@ -126,12 +189,12 @@ std::string mode_name_from_shape(const Model& model, const BodyRoles& roles, con
       // Shared by several units: their phase in the motion's main coordinate.
       const bool frames = roles.role[size_t(units[0].second)] == BodyRole::bogie_frame;
       const std::string kind = frames ? "bogie" : "wheelset";
-      name = kind + " " + motion_word(!frames) + ", " + kind + "s ";
+      name = kind + " " + motion_word(!frames) + ", ";
       size_t sharing = 0;
       for (const auto& un : units)
         if (un.first >= 0.1 * gear) ++sharing;
       if (sharing > 2) {
-        name += "coupled";
+        name += kind + "s coupled";
       } else {
         const size_t a = size_t(units[0].second), b = size_t(units[1].second);
         int c = 0;
@@ -142,8 +205,7 @@ std::string mode_name_from_shape(const Model& model, const BodyRoles& roles, con
           case longitudinal_motion: c = 0; break;
           default: c = 4; break;
         }
-        name += (std::conj(q[a][size_t(c)]) * q[b][size_t(c)]).real() >= 0.0 ? "in phase"
-                                                                           : "anti-phase";
+        name += phase_words(model, a, b, q[a][size_t(c)], q[b][size_t(c)], lambda, kind + "s");
       }
     }
   }
@@ -152,7 +214,36 @@ std::string mode_name_from_shape(const Model& model, const BodyRoles& roles, con
 }
 
 void make_names_unique(std::vector<std::string>& names, const std::vector<int>& copies_of,
-                       const std::vector<double>& order_key) {
+                       const std::vector<double>& order_key,
+                       const std::vector<std::vector<std::string>>& qualifiers) {
+  const auto counted = [&](size_t i) { return !(i < copies_of.size() && copies_of[i] >= 0); };
+  // Qualifiers, level by level, for the groups of equal names.
+  if (qualifiers.size() == names.size()) {
+    size_t levels = 0;
+    for (const auto& q : qualifiers) levels = std::max(levels, q.size());
+    std::map<std::string, std::vector<size_t>> groups;
+    for (size_t i = 0; i < names.size(); ++i)
+      if (counted(i)) groups[names[i]].push_back(i);
+    for (const auto& [base, members] : groups) {
+      if (members.size() < 2) continue;
+      for (size_t level = 1; level <= levels; ++level) {
+        std::map<std::string, int> count;
+        std::vector<std::string> trial;
+        for (size_t i : members) {
+          std::string n = base;
+          for (size_t k = 0; k < level && k < qualifiers[i].size(); ++k) n += ", " + qualifiers[i][k];
+          trial.push_back(n);
+          ++count[n];
+        }
+        const bool distinct = std::all_of(count.begin(), count.end(),
+                                          [](const auto& c) { return c.second == 1; });
+        if (distinct || level == levels) {
+          for (size_t k = 0; k < members.size(); ++k) names[members[k]] = trial[k];
+          break;
+        }
+      }
+    }
+  }
   std::vector<size_t> order(names.size());
   for (size_t i = 0; i < order.size(); ++i) order[i] = i;
   if (order_key.size() == names.size())
@@ -160,7 +251,7 @@ void make_names_unique(std::vector<std::string>& names, const std::vector<int>& 
                      [&](size_t a, size_t b) { return order_key[a] < order_key[b]; });
   std::map<std::string, int> seen;
   for (size_t i : order) {
-    if (i < copies_of.size() && copies_of[i] >= 0) continue;
+    if (!counted(i)) continue;
     const int k = ++seen[names[i]];
     if (k > 1) names[i] += " (" + std::to_string(k) + ")";
   }

@@ -89,7 +89,7 @@ std::vector<ModeShape> describe_mode_shapes(const Model& model, const LinearMode
 }
 
 std::vector<ModeReport> describe_modes(const Model& model, const LinearModel& lin,
-                                       const std::vector<EigenPair>& pairs) {
+                                       const std::vector<EigenPair>& pairs, double speed_m_per_s) {
   // linearize() sets norm_A (dense or sparse A); a hand-made LinearModel may not.
   const double zero = 1e-9 * std::max(1.0, lin.norm_A > 0.0 ? lin.norm_A : lin.A.norm());
   const BodyRoles roles = body_roles(model);
@@ -130,16 +130,20 @@ std::vector<ModeReport> describe_modes(const Model& model, const LinearModel& li
     }
     m.shape_name = m.neutral               ? "neutral (rigid-body/cyclic)"
                    : moves_no_body(shapes[i]) ? internal_state_mode_name(model, lin, p.vector)
-                                              : mode_name_from_shape(model, roles, shapes[i], p.value);
+                                              : mode_name_from_shape(model, roles, shapes[i], p.value,
+                                                                     speed_m_per_s);
+    m.dominant_body = dominant_body(model, shapes[i]);
     modes.push_back(std::move(m));
   }
   std::vector<std::string> names;
   std::vector<double> damping;
+  std::vector<std::vector<std::string>> qualifiers;
   for (const ModeReport& m : modes) {
     names.push_back(m.shape_name);
     damping.push_back(m.damping_ratio);
+    qualifiers.push_back(mode_qualifiers(m.dominant_body, m.eigenvalue));
   }
-  make_names_unique(names, conjugate_partners(modes), damping);
+  make_names_unique(names, conjugate_partners(modes), damping, qualifiers);
   for (size_t i = 0; i < modes.size(); ++i) modes[i].name = names[i];
   return modes;
 }

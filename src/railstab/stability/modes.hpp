@@ -31,6 +31,7 @@ struct ModeReport {
   // mate's name.
   std::string name;
   std::string shape_name;  // from the shape alone, before making names unique
+  std::string dominant_body;  // the body with the most kinetic energy ("" for none)
   // The shape itself is not kept (26 KB per mode of a 16-car train, at every
   // speed of a sweep): describe_mode_shapes gives it again, reports form it
   // with the potential shares (stability/point_mode_shapes.hpp full_mode_shapes).
@@ -46,8 +47,10 @@ struct ModeReport {
 // (translations) or the principal inertia (rotations) of that coordinate.
 // Names from the shapes, unique among `pairs` (suffixes in ascending damping
 // ratio: the least damped of a name keeps it plain).
+// speed_m_per_s: the linearisation's speed (mode names: hunting needs the
+// kinematic relation psi / y = i omega / V, stability/mode_names.hpp).
 std::vector<ModeReport> describe_modes(const Model& model, const LinearModel& lin,
-                                       const std::vector<EigenPair>& pairs);
+                                       const std::vector<EigenPair>& pairs, double speed_m_per_s);
 
 // The shapes describe_modes names the modes from (displacements and kinetic
 // shares, no potential shares), one per pair; a complex pair's partner (the

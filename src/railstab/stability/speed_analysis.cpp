@@ -105,7 +105,7 @@ StabilityPoint SpeedStability::at(double speed_m_per_s) {
   const bool sparse =
       resolved_solver(options_.solver, model_.state_size()) == EigenSolverKind::sparse;
   return evaluate(speed_m_per_s, sparse, [&](StabilityPoint& p) {
-    if (!sparse) return describe_modes(model_, p.linear, solve_eigen(p.linear.A, options_));
+    if (!sparse) return describe_modes(model_, p.linear, solve_eigen(p.linear.A, options_), p.speed_m_per_s);
     const BandEigenResult band =
         eigen_sparse_band(p.linear.A_sparse, band_cover_options(options_), last_band_discs_);
     last_band_discs_ = band.discs;
@@ -120,7 +120,7 @@ StabilityPoint SpeedStability::at(double speed_m_per_s) {
         << " Hz): a mode there may be missing (use --solver dense)";
       p.eigen_warning = w.str();
     }
-    return describe_modes(model_, p.linear, band.pairs);
+    return describe_modes(model_, p.linear, band.pairs, p.speed_m_per_s);
   });
 }
 
@@ -140,7 +140,7 @@ StabilityPoint SpeedStability::tracking(double speed_m_per_s, std::complex<doubl
     if (!(near.disc.radius > 0.0))
       p.eigen_warning = "tracked eigen-analysis: the Krylov-Schur solve did not converge the modes nearest the "
                         "tracked one";
-    return describe_modes(model_, p.linear, near.pairs);
+    return describe_modes(model_, p.linear, near.pairs, p.speed_m_per_s);
   });
 }
 
@@ -493,30 +493,41 @@ namespace railstab {
 void name_tracked_modes(std::vector<StabilityPoint>& grid, const std::vector<std::vector<int>>& ids) {
   // Votes per track: shape name -> count; the smallest damping ratio along
   // the track orders the suffixes (the least damped keeps the plain name).
-  std::map<int, std::map<std::string, int>> votes;
+  // Per track also the dominant body's votes and the mean eigenvalue: the
+  // words that tell equal names apart (make_names_unique).
+  std::map<int, std::map<std::string, int>> votes, body_votes;
   std::map<int, double> min_damping;
+  std::map<int, std::pair<std::complex<double>, int>> eigenvalue_sum;
   for (size_t i = 0; i < grid.size(); ++i)
     for (size_t j = 0; j < grid[i].modes.size(); ++j) {
       const int id = ids[i][j];
       if (id < 0) continue;
       ++votes[id][grid[i].modes[j].shape_name];
+      ++body_votes[id][grid[i].modes[j].dominant_body];
+      eigenvalue_sum[id].first += grid[i].modes[j].eigenvalue;
+      ++eigenvalue_sum[id].second;
       const auto [it, fresh] = min_damping.emplace(id, grid[i].modes[j].damping_ratio);
       if (!fresh) it->second = std::min(it->second, grid[i].modes[j].damping_ratio);
     }
   std::vector<int> tracks;
   std::vector<std::string> names;
   std::vector<double> damping;
-  for (const auto& [id, v] : votes) {
+  std::vector<std::vector<std::string>> qualifiers;
+  const auto most_voted = [](const std::map<std::string, int>& v) {
     // Most votes; among equal votes the name seen first in the map order
     // (alphabetical), so a run always picks the same one.
-    const auto best = std::max_element(v.begin(), v.end(), [](const auto& a, const auto& b) {
-      return a.second < b.second;
-    });
+    return std::max_element(v.begin(), v.end(), [](const auto& a, const auto& b) {
+             return a.second < b.second;
+           })->first;
+  };
+  for (const auto& [id, v] : votes) {
     tracks.push_back(id);
-    names.push_back(best->first);
+    names.push_back(most_voted(v));
     damping.push_back(min_damping[id]);
+    const auto& [sum, n] = eigenvalue_sum[id];
+    qualifiers.push_back(mode_qualifiers(most_voted(body_votes[id]), sum / double(n)));
   }
-  make_names_unique(names, {}, damping);
+  make_names_unique(names, {}, damping, qualifiers);
   std::map<int, std::string> track_name;
   for (size_t k = 0; k < tracks.size(); ++k) track_name[tracks[k]] = names[k];
   for (size_t i = 0; i < grid.size(); ++i) {
@@ -525,12 +536,14 @@ void name_tracked_modes(std::vector<StabilityPoint>& grid, const std::vector<std
     std::vector<std::string> own;
     std::vector<int> copies(modes.size(), -1);
     std::vector<double> damping_ratio;
+    std::vector<std::vector<std::string>> own_qualifiers;
     for (size_t j = 0; j < modes.size(); ++j) {
       own.push_back(modes[j].shape_name);
       damping_ratio.push_back(modes[j].damping_ratio);
+      own_qualifiers.push_back(mode_qualifiers(modes[j].dominant_body, modes[j].eigenvalue));
       if (ids[i][j] >= 0 || partner[j] >= 0) copies[j] = int(j);  // not counted here
     }
-    make_names_unique(own, copies, damping_ratio);
+    make_names_unique(own, copies, damping_ratio, own_qualifiers);
     for (size_t j = 0; j < modes.size(); ++j)
       if (ids[i][j] >= 0) modes[j].name = track_name[ids[i][j]];
       else if (partner[j] < 0) modes[j].name = own[j];
