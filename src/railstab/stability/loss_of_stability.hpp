@@ -21,6 +21,16 @@
 //    jumps. kJumpShare = 0.25 leaves a factor 100 for a local slope steeper
 //    than the grid's mean (the default bracket shrinks 250x: 2.5 m/s to
 //    0.01 m/s); the thesis cases' crossings stay below 0.02.
+//    Within a jump, the steady state itself jumps when its largest
+//    translation change across the final bracket exceeds what the grid
+//    bracket's mean slope allows over the final bracket's width, times
+//    1 / kJumpShare^2 = 16 (plus 1e-9 m of round-off), or when the unstable
+//    side's steady state is another one (found by pseudo-transient
+//    continuation, not followed from below); otherwise only the
+//    eigenvalues jump on a continuous steady state: a contact point
+//    appearing or switching makes the Jacobian discontinuous (a coach in a
+//    curve with saturated creep: max Re from -0.35 to +0.09 1/s across
+//    0.01 m/s with the steady state moving 3e-5 m).
 //  - oscillatory_crossing (Hopf: hunting is one): continuous, and the least
 //    stable mode at the critical speed oscillates (Im > 0).
 //  - aperiodic_crossing (divergence, or the fold of a steady state): a real
@@ -57,6 +67,10 @@ struct LossOfStability {
   // the final bracket (m) and which: a jump of the steady state shows here.
   double largest_translation_change_m = 0.0;
   std::string largest_translation_change_state;
+  // The same across the grid bracket (m), and whether the steady state is
+  // continuous across the final bracket (the change shrank with it).
+  double grid_translation_change_m = 0.0;
+  bool steady_state_continuous = true;
   // The unstable side's steady state came from the pseudo-transient
   // fallback, not from continuation in speed: the branch followed from below
   // could not be continued.
