@@ -16,9 +16,10 @@ done
 mkdir -p plots
 for f in thesis_bogie_tangent_20mps_wheelset_lateral thesis_bogie_tangent_40mps_wheelset_lateral \
          thesis_bogie_tangent_20mps_wheelset_yaw thesis_bogie_tangent_40mps_body_yaw \
-         thesis_bogie_curve_20mps_wheelset_lateral thesis_bogie_curve_20mps_absolute_roll \
+         thesis_bogie_curve_20mps_wheelset_lateral thesis_bogie_curve_20mps_wheelset_absolute_roll \
+         thesis_bogie_curve_20mps_body_absolute_roll \
          thesis_bogie_curve_40mps_wheelset_lateral thesis_vehicle_tangent_40mps_wheelset_lateral \
-         thesis_vehicle_curve_20mps_wheelset_lateral thesis_vehicle_curve_20mps_absolute_roll \
-         thesis_vehicle_curve_20mps_roll thesis_vehicle_curve_40mps_wheelset_lateral; do
+         thesis_vehicle_curve_20mps_wheelset_lateral thesis_vehicle_curve_20mps_wheelset_absolute_roll \
+         thesis_vehicle_curve_20mps_body_absolute_roll thesis_vehicle_curve_20mps_body_roll thesis_vehicle_curve_40mps_wheelset_lateral; do
   cp "$out/$f.png" plots/
 done

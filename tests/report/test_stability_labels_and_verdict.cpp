@@ -13,6 +13,7 @@
 #include <railstab/setup/prepare_scene.hpp>
 #include <railstab/stability/speed_analysis.hpp>
 
+#include <array>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -155,26 +156,113 @@ TEST(StabilityPlots, EveryCurveNamedOneColourPerModeCriticalMarkedPngAndSvg) {
     EXPECT_EQ(title.rfind(names[size_t(k)], 0), 0u) << title;
     if (title.find("[critical mode]") != std::string::npos) ++critical_tags;
   }
-  EXPECT_EQ(clauses.size(), names.size());
+  // At most six named (the critical mode and the least damped others), each
+  // in its own colour; the rest grey without a name.
+  const size_t named = std::min<size_t>(names.size(), 6);
+  EXPECT_EQ(clauses.size(), named);
+  std::set<std::string> distinct;
   for (const auto& [k, c] : colours) {
     EXPECT_EQ(c.size(), 1u) << "mode " << names[size_t(k)] << " changes colour";
     EXPECT_EQ(clauses[k], 3) << names[size_t(k)];
+    distinct.insert(*c.begin());
   }
+  EXPECT_EQ(distinct.size(), colours.size()) << "two named modes share a colour";
   EXPECT_EQ(critical_tags, 3);  // the hunting mode, tagged in each plot
-  EXPECT_EQ(w.script.find("notitle"), std::string::npos);
+  const std::regex grey("index [0-9]+ using [^\\n]* lc rgb '#c8c8c8' lw 1 notitle");
+  EXPECT_EQ(size_t(std::distance(std::sregex_iterator(w.script.begin(), w.script.end(), grey),
+                                 std::sregex_iterator())),
+            3 * (names.size() - named));
   // Units on every axis, the critical speed marked, the scene in the title.
   for (const char* label : {"set xlabel 'real part of the eigenvalue [1/s]'",
                             "set ylabel 'frequency [Hz]'", "set xlabel 'speed [m/s]'",
                             "set ylabel 'damping ratio [-]'", "V_crit = "})
     EXPECT_NE(w.script.find(label), std::string::npos) << label;
   EXPECT_NE(w.script.find("set title '" + s.model.name + ": "), std::string::npos);
-  // The legend is drawn: every name is in the SVG's text.
-  for (const std::string& n : names) EXPECT_NE(w.svg_damping.find(n), std::string::npos) << n;
+  // The legend is drawn: every named mode's name is in the SVG's text.
+  for (const auto& [k, c] : colours)
+    EXPECT_NE(w.svg_damping.find(names[size_t(k)]), std::string::npos) << names[size_t(k)];
+}
+
+// The root locus a client reads (issue 24 item 5): speed marks along the
+// named branches, numbered on the critical one, at the eigenvalues the tracks
+// file holds for those speeds; a frame that holds every plotted point and the
+// imaginary axis; the V_crit label left of the axis, inside the frame.
+TEST(StabilityPlots, RootLocusSpeedMarksAndFrame) {
+  if (find_gnuplot().empty()) GTEST_SKIP() << "gnuplot not installed";
+  const PreparedScene s =
+      prepare_scene(std::string(RAILSTAB_CASES_DIR) + "/thesis_bogie_tangent.toml", {});
+  CriticalSpeedOptions opt;
+  opt.from_m_per_s = 20.0;
+  opt.to_m_per_s = 50.0;
+  opt.grid_step_m_per_s = 5.0;
+  const CriticalSpeedResult r = find_critical_speed(s.model, s.equilibrium.state, s.speed_m_per_s, opt);
+  ASSERT_TRUE(r.critical_speed_found);
+  const Written w = write_all(s.model, r, "locus", true);
+  // Tracks file: per block its name and (speed, re, f).
+  std::map<std::string, std::vector<std::array<double, 3>>> points;
+  {
+    std::istringstream in(w.tracks);
+    std::string line, current;
+    while (std::getline(in, line)) {
+      std::smatch m;
+      if (std::regex_match(line, m, std::regex("# track [0-9]+: '([^']*)'"))) {
+        current = m[1];
+      } else if (!line.empty() && line[0] != '#' && !current.empty()) {
+        std::istringstream cols(line);
+        double v, re, f;
+        cols >> v >> re >> f;
+        points[current].push_back({v, re, f});
+      }
+    }
+  }
+  // The critical mode's name, from its legend tag.
+  std::smatch tag;
+  ASSERT_TRUE(std::regex_search(w.script, tag, std::regex("title '([^']*)  \\[critical mode\\]'")));
+  const auto& critical = points.at(tag[1]);
+  // Marks every 5 m/s (30 m/s range: 6 steps), numbered on the critical branch
+  // at its eigenvalue at that speed (a grid speed: the tracks file's value).
+  EXPECT_NE(w.script.find("title 'speed marks every 5 m/s'"), std::string::npos);
+  int numbered = 0;
+  for (const auto& p : critical) {
+    std::ostringstream v;
+    v << p[0];
+    std::smatch m;
+    if (!std::regex_search(w.script, m,
+                           std::regex("set label [0-9]+ '" + v.str() + "' at ([-0-9.e+]+), ([-0-9.e+]+) left")))
+      continue;
+    ++numbered;
+    EXPECT_NEAR(std::stod(m[1]), p[1], 1e-6 * (1.0 + std::abs(p[1]))) << v.str();
+    EXPECT_NEAR(std::stod(m[2]), p[2], 1e-6 * (1.0 + p[2])) << v.str();
+  }
+  EXPECT_EQ(numbered, 7);  // 20, 25, ..., 50 m/s
+  // The marks' data block: one row per named branch and round speed.
+  const size_t begin = w.script.find("$speed_marks << EOD\n");
+  ASSERT_NE(begin, std::string::npos);
+  const size_t end = w.script.find("EOD\n", begin + 20);
+  const std::string block = w.script.substr(begin + 19, end - begin - 19);
+  EXPECT_GE(std::count(block.begin(), block.end(), '\n'), 7);
+  // The frame holds every plotted point and the imaginary axis.
+  std::smatch xr, yr;
+  ASSERT_TRUE(std::regex_search(w.script, xr, std::regex("set xrange \\[([-0-9.e+]+):([-0-9.e+]+)\\]")));
+  ASSERT_TRUE(std::regex_search(w.script, yr, std::regex("set yrange \\[0:([-0-9.e+]+)\\]")));
+  const double x0 = std::stod(xr[1]), x1 = std::stod(xr[2]), y1 = std::stod(yr[1]);
+  EXPECT_LT(x0, 0.0);
+  EXPECT_GT(x1, 0.0);
+  EXPECT_GE(x0, -20.0);
+  for (const auto& [name, ps] : points)
+    for (const auto& p : ps)
+      if (p[1] >= -20.0 && p[2] <= 20.0) {
+        EXPECT_GE(p[1], x0) << name;
+        EXPECT_LE(p[1], x1) << name;
+        EXPECT_LE(p[2], y1) << name;
+      }
+  EXPECT_NE(w.script.find(" m/s' at 0, "), std::string::npos);
+  EXPECT_NE(w.script.find("lc 'red' right offset -1,1"), std::string::npos);
 }
 
 // A train has many more tracked modes than a legend can hold (the 4-car
 // train: ~60 below 20 Hz): the critical mode and the least damped others
-// are named, at most 24 per plot, in colour; the rest are drawn thin grey
+// are named, at most 6 per plot, in colour; the rest are drawn thin grey
 // without a name and counted in one legend entry, so the plot keeps its width.
 TEST(StabilityPlots, ATrainNamesTheCriticalAndTheLeastDampedModesOnly) {
   if (find_gnuplot().empty()) GTEST_SKIP() << "gnuplot not installed";
@@ -191,16 +279,16 @@ TEST(StabilityPlots, ATrainNamesTheCriticalAndTheLeastDampedModesOnly) {
   const std::regex block("# track [0-9]+: '([^']*)'");
   const size_t tracks = size_t(std::distance(
       std::sregex_iterator(w.tracks.begin(), w.tracks.end(), block), std::sregex_iterator()));
-  ASSERT_GT(tracks, 24u);
+  ASSERT_GT(tracks, 6u);
   const std::regex named("index [0-9]+ using [^\\n]* title '([^']*)'");
   const std::regex unnamed("index [0-9]+ using [^\\n]* lc rgb '#c8c8c8' lw 1 notitle");
   const auto count = [&](const std::regex& re) {
     return size_t(std::distance(std::sregex_iterator(w.script.begin(), w.script.end(), re),
                                 std::sregex_iterator()));
   };
-  EXPECT_EQ(count(named), 3 * 24u);  // three plots
-  EXPECT_EQ(count(unnamed), 3 * (tracks - 24));
-  EXPECT_NE(w.script.find("title '" + std::to_string(tracks - 24) + " better-damped modes, unnamed'"),
+  EXPECT_EQ(count(named), 3 * 6u);  // three plots
+  EXPECT_EQ(count(unnamed), 3 * (tracks - 6));
+  EXPECT_NE(w.script.find("title '" + std::to_string(tracks - 6) + " better-damped modes, unnamed'"),
             std::string::npos);
   // The critical mode is among the named, in each plot.
   size_t critical = 0;
@@ -211,9 +299,11 @@ TEST(StabilityPlots, ATrainNamesTheCriticalAndTheLeastDampedModesOnly) {
   // The root locus says the sparse solver computed only its box.
   EXPECT_NE(w.script.find("sparse solver: Re near 0 only"),
             std::string::npos);
-  // Every named mode's minimum damping ratio over the speeds is at most
-  // every unnamed one's but the critical mode's own.
+  // Lateral-plane modes are named before vertical and longitudinal ones;
+  // within a plane every named mode's minimum damping ratio over the speeds
+  // is at most every unnamed one's (the critical mode is named regardless).
   std::map<std::string, double> min_damping;
+  std::map<std::string, bool> lateral;
   std::istringstream in(w.tracks);
   std::string line, current;
   while (std::getline(in, line)) {
@@ -221,6 +311,8 @@ TEST(StabilityPlots, ATrainNamesTheCriticalAndTheLeastDampedModesOnly) {
     if (std::regex_match(line, m, std::regex("# track [0-9]+: '([^']*)'"))) {
       current = m[1];
       min_damping[current] = 1e9;
+    } else if (line.rfind("# plane: ", 0) == 0 && !current.empty()) {
+      lateral[current] = line == "# plane: lateral";
     } else if (!line.empty() && line[0] != '#' && !current.empty()) {
       std::istringstream cols(line);
       double v, re, f, zeta;
@@ -236,12 +328,24 @@ TEST(StabilityPlots, ATrainNamesTheCriticalAndTheLeastDampedModesOnly) {
     if (tag != std::string::npos) n = n.substr(0, tag);
     named_names.insert(n);
   }
-  double worst_named = -1e9, best_unnamed = 1e9;
+  std::smatch critical_tag;
+  ASSERT_TRUE(std::regex_search(w.script, critical_tag, std::regex("title '([^']*)  \\[critical mode\\]'")));
+  const std::string critical_name = critical_tag[1];
+  bool unnamed_lateral = false, named_other = false;
   for (const auto& [name, zeta] : min_damping) {
-    if (named_names.count(name))
-      worst_named = std::max(worst_named, zeta);
-    else
-      best_unnamed = std::min(best_unnamed, zeta);
+    if (named_names.count(name)) named_other |= !lateral[name];
+    else unnamed_lateral |= lateral[name];
   }
-  EXPECT_LE(worst_named, best_unnamed);
+  EXPECT_FALSE(unnamed_lateral && named_other) << "a vertical mode named before a lateral one";
+  for (const bool plane : {true, false}) {
+    double worst_named = -1e9, best_unnamed = 1e9;
+    for (const auto& [name, zeta] : min_damping) {
+      if (lateral[name] != plane || name == critical_name) continue;
+      if (named_names.count(name))
+        worst_named = std::max(worst_named, zeta);
+      else
+        best_unnamed = std::min(best_unnamed, zeta);
+    }
+    EXPECT_LE(worst_named, best_unnamed) << (plane ? "lateral" : "other");
+  }
 }

@@ -60,21 +60,32 @@ struct PlottedTrack {
   double mean_frequency_hz = 0.0;
   double min_damping_ratio = 0.0;  // over the speeds of the track
   bool hunting = false;
-  // In the legend, in colour; the others (a train's many modes) are drawn
-  // thin and grey under them, counted in one legend entry.
+  // The hunting track's legend tag: "[critical mode]" when it decides a
+  // critical speed (or is unstable at the start), else "[least damped at
+  // 150 m/s]": with no crossing no mode is critical.
+  std::string tag;
+  // Lateral-plane mode (mean kinetic share in lateral, roll and yaw >= 1/2):
+  // these are named before vertical and longitudinal ones of lower damping.
+  bool lateral = false;
+  // In the legend, in colour; the others are drawn thin and grey under
+  // them, counted in one legend entry.
   bool labelled = true;
-  int colour = 0;  // index into kTrackColours (and dash pattern) among the labelled
+  int colour = 0;  // index into kTrackColours among the labelled
+  // (speed m/s, real part 1/s, frequency Hz, damping ratio), by speed.
+  std::vector<std::array<double, 4>> points;
 };
 
-// A legend of more entries squeezes the plot to a strip (a 4-car train has
-// ~60 tracked modes below 20 Hz): the hunting mode and the least damped
-// others are named, up to this many.
-constexpr size_t kMaxLabelledTracks = 24;
+// The legend names the modes that matter: the critical (hunting) mode, then
+// the lateral-plane modes, then the others, each group by its smallest
+// damping ratio over the speed range, at most this many in all; every other mode is one thin grey curve, counted in
+// one legend entry. Six distinct colours stay distinguishable, and a longer
+// legend of near-identical names is what a client cannot read.
+constexpr size_t kMaxLabelledTracks = 6;
 
-// Line colours, one per plotted track in legend order (ascending mean
-// frequency); past the tenth the colours repeat with another dash pattern.
-const char* const kTrackColours[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd",
-                                     "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22", "#17becf"};
+// Okabe and Ito's colour-blind-safe qualitative palette (without its yellow,
+// which is unreadable on white), one colour per named mode, in legend order.
+const char* const kTrackColours[kMaxLabelledTracks] = {"#0072b2", "#d55e00", "#009e73",
+                                                       "#cc79a7", "#e69f00", "#56b4e9"};
 
 // One gnuplot data block per tracked mode (speed, real, frequency, damping),
 // only for modes below the frequency cap, in ascending mean frequency (the
@@ -86,6 +97,7 @@ std::vector<PlottedTrack> write_track_blocks(std::ostream& out, const CriticalSp
                                              double max_hz) {
   std::map<int, std::vector<std::array<double, 4>>> tracks;
   std::map<int, std::string> names;
+  std::map<int, double> lateral_share;  // summed over the track's points
   for (size_t i = 0; i < r.grid.size(); ++i)
     for (size_t j = 0; j < r.grid[i].modes.size(); ++j) {
       const ModeReport& m = r.grid[i].modes[j];
@@ -93,6 +105,7 @@ std::vector<PlottedTrack> write_track_blocks(std::ostream& out, const CriticalSp
       tracks[ids[i][j]].push_back(
           {r.grid[i].speed_m_per_s, m.eigenvalue.real(), m.frequency_hz, m.damping_ratio});
       names[ids[i][j]] = m.name;
+      lateral_share[ids[i][j]] += m.lateral_share;
     }
   std::string hunting_name;
   if (r.critical_speed_found || r.unstable_at_start) {
@@ -113,6 +126,16 @@ std::vector<PlottedTrack> write_track_blocks(std::ostream& out, const CriticalSp
       t.min_damping_ratio = std::min(t.min_damping_ratio, p[3]);
     }
     t.hunting = !hunting_name.empty() && t.name == hunting_name;
+    if (t.hunting) {
+      std::ostringstream tag;
+      if (r.critical_speed_found || r.unstable_at_start)
+        tag << "[critical mode]";
+      else
+        tag << "[least damped at " << r.grid.back().speed_m_per_s << " m/s]";
+      t.tag = tag.str();
+    }
+    t.points = track.second;
+    t.lateral = lateral_share[t.id] / double(track.second.size()) >= 0.5;
     plotted.push_back(t);
   }
   std::stable_sort(plotted.begin(), plotted.end(), [](const PlottedTrack& a, const PlottedTrack& b) {
@@ -123,6 +146,7 @@ std::vector<PlottedTrack> write_track_blocks(std::ostream& out, const CriticalSp
     for (size_t k = 0; k < rank.size(); ++k) rank[k] = k;
     std::stable_sort(rank.begin(), rank.end(), [&](size_t a, size_t b) {
       if (plotted[a].hunting != plotted[b].hunting) return plotted[a].hunting;
+      if (plotted[a].lateral != plotted[b].lateral) return plotted[a].lateral;
       return plotted[a].min_damping_ratio < plotted[b].min_damping_ratio;
     });
     for (size_t k = kMaxLabelledTracks; k < rank.size(); ++k) plotted[rank[k]].labelled = false;
@@ -135,7 +159,8 @@ std::vector<PlottedTrack> write_track_blocks(std::ostream& out, const CriticalSp
          "tracked mode\n";
   for (const PlottedTrack& t : plotted) {
     const int id = t.id;
-    out << "# track " << id << ": " << gnuplot_text(t.name) << "\n";
+    out << "# track " << id << ": " << gnuplot_text(t.name) << "\n"
+        << "# plane: " << (t.lateral ? "lateral" : "vertical/longitudinal") << "\n";
     for (const auto& p : tracks[id]) {
       for (int k = 0; k < 4; ++k) {
         if (k) out << ' ';
@@ -181,14 +206,101 @@ std::string track_plot_clauses(const std::vector<PlottedTrack>& tracks, const st
     if (!t.labelled) continue;
     separate();
     p << gnuplot_path(file) << " index " << k << " using " << using_columns << " with " << style
-      << " lc rgb '" << kTrackColours[t.colour % 10] << "' dt " << 1 + (t.colour / 10) % 4
-      << " lw " << (t.hunting ? 4.0 : 1.5) << " title "
-      << gnuplot_text(t.hunting ? t.name + "  [critical mode]" : t.name);
+      << " lc rgb '" << kTrackColours[size_t(t.colour) % kMaxLabelledTracks] << "' lw " << (t.hunting ? 4.0 : 1.5) << " title "
+      << gnuplot_text(t.hunting ? t.name + "  " + t.tag : t.name);
   }
   return p.str();
 }
 
-// Ranges on both axes are explicit: with no plottable point (a one-speed
+// The root locus's frame: every plotted point (real part >= -20 1/s, below
+// the frequency cap) with a margin of 6 % of each span, the imaginary axis
+// always inside; [-20, 1] x [0, max_hz] when there is none.
+struct LocusFrame {
+  double re_min = -20.0, re_max = 1.0, f_max = 0.0;
+};
+
+LocusFrame locus_frame(const std::vector<PlottedTrack>& tracks, double max_hz) {
+  double lo = INFINITY, hi = 0.0, top = 0.0;
+  for (const PlottedTrack& t : tracks)
+    for (const auto& p : t.points)
+      if (p[1] >= -20.0 && p[2] <= max_hz) {
+        lo = std::min(lo, p[1]);
+        hi = std::max(hi, p[1]);
+        top = std::max(top, p[2]);
+      }
+  LocusFrame f;
+  f.f_max = max_hz;
+  if (!std::isfinite(lo)) return f;
+  lo = std::min(lo, 0.0);
+  const double span = std::max(hi - lo, 0.1);
+  f.re_min = std::max(-20.0, lo - 0.06 * span);
+  f.re_max = hi + 0.06 * span;
+  f.f_max = std::min(max_hz, std::max(0.5, 1.08 * top));
+  return f;
+}
+
+std::string number_text(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+// A round speed step giving 4 to 8 marks over [lo, hi] (m/s).
+double speed_mark_step(double lo, double hi) {
+  const double span = hi - lo;
+  for (double step : {0.5, 1.0, 2.0, 2.5, 5.0, 10.0, 20.0, 25.0, 50.0, 100.0, 200.0, 250.0, 500.0})
+    if (span / step <= 8.0) return step;
+  return span / 4.0;
+}
+
+// The eigenvalue of a track at a speed, linear between its grid speeds
+// (false outside the track's speeds). Returns (real part, frequency).
+bool track_at_speed(const PlottedTrack& t, double v, double& re, double& f) {
+  for (size_t k = 1; k < t.points.size(); ++k) {
+    const auto& a = t.points[k - 1];
+    const auto& b = t.points[k];
+    if (v < a[0] || v > b[0] || !(b[0] > a[0])) continue;
+    const double w = (v - a[0]) / (b[0] - a[0]);
+    re = a[1] + w * (b[1] - a[1]);
+    f = a[2] + w * (b[2] - a[2]);
+    return true;
+  }
+  return false;
+}
+
+// Speed marks along the named branches of the root locus: a gnuplot data
+// block of (real part, frequency) at the round speeds of `step`, and labels
+// with the speed on the branch that decides the verdict (the critical mode,
+// else the first named, least damped one), placed right of the mark.
+void write_speed_marks(std::ostream& gp, const std::vector<PlottedTrack>& tracks, double step,
+                       const LocusFrame& frame) {
+  const PlottedTrack* numbered = nullptr;
+  for (const PlottedTrack& t : tracks)
+    if (t.labelled && t.hunting) numbered = &t;
+  if (!numbered)
+    for (const PlottedTrack& t : tracks)
+      if (t.labelled && (!numbered || t.min_damping_ratio < numbered->min_damping_ratio)) numbered = &t;
+  gp << "$speed_marks << EOD\n" << std::setprecision(8);
+  int label = 10;
+  std::ostringstream labels;
+  labels.precision(8);
+  for (const PlottedTrack& t : tracks) {
+    if (!t.labelled || t.points.empty()) continue;
+    for (double v = std::ceil(t.points.front()[0] / step - 1e-9) * step;
+         v <= t.points.back()[0] + 1e-9; v += step) {
+      double re = 0.0, f = 0.0;
+      if (!track_at_speed(t, v, re, f) || re < frame.re_min || re > frame.re_max || f > frame.f_max)
+        continue;
+      gp << re << ' ' << f << '\n';
+      if (&t == numbered)
+        labels << "set label " << label++ << " '" << v << "' at " << re << ", " << f
+               << " left offset 0.7,0 font ',8' tc rgb '#303030' front\n";
+    }
+  }
+  gp << "EOD\n" << labels.str();
+}
+
+// Ranges on both axes are explicit:// Ranges on both axes are explicit: with no plottable point (a one-speed
 // grid, every mode above the band) gnuplot's autoscale fails ("x range is
 // invalid"); with them the plot is made, empty. Each plot is written as PNG
 // and, by `replot` on the svg terminal, as SVG.
@@ -209,6 +321,11 @@ std::vector<std::string> plot_stability(OutputSet& outputs, const std::string& s
                                                                           : r.from_m_per_s + 1.0;
   std::ostringstream range;
   range << v_lo << " - " << v_hi << " m/s";
+  // A label at speed v on a speed axis: on the side of v with more room, so
+  // it stays inside the frame.
+  const auto inside_frame = [&](double v) {
+    return std::string(v > 0.5 * (v_lo + v_hi) ? "right offset -1,0" : "left offset 1,0");
+  };
   auto titled = [&](const std::string& what) {
     return gnuplot_text(title + ": " + what + " (" + range.str() + ")");
   };
@@ -227,7 +344,10 @@ std::vector<std::string> plot_stability(OutputSet& outputs, const std::string& s
        << "# Each curve is one mode, tracked over speed by eigenvector continuity, named from\n"
        << "# its shape; the same mode has the same colour in every plot.\n"
        << "set datafile separator whitespace\n" << png_terminal << "set grid\n"
-       << "set key outside right top vertical Left reverse noenhanced font ',9' spacing 1.1\n";
+       // The legend below the frame in columns of four: beside it, the
+       // names' length squeezed the frame to less than half the width.
+       << "set key outside below left vertical maxrows 4 Left reverse noenhanced font ',9' "
+          "spacing 1.1 width 2\n";
     auto emit = [&](size_t k, const std::string& plot) {
       gp << "set output " << gnuplot_text(pngs[k]) << "\n" << plot << "\n"
          << svg_terminal << "set output " << gnuplot_text(stem + kinds[k] + ".svg") << "\nreplot\n"
@@ -242,28 +362,40 @@ std::vector<std::string> plot_stability(OutputSet& outputs, const std::string& s
        << titled(sparse ? "root locus below " + band.str() + " Hz, sparse solver: Re near 0 only"
                         : "root locus of the modes below " + band.str() + " Hz, real part >= -20 1/s")
        << "\nset xlabel 'real part of the eigenvalue [1/s]'\nset ylabel 'frequency [Hz]'\n"
-       << "set arrow 2 from 0, graph 0 to 0, graph 1 nohead lc 'black'\n"
-       << "set yrange [0:" << max_hz << "]\nset xrange [-20:*]\n";
+       << "set arrow 2 from 0, graph 0 to 0, graph 1 nohead lc 'black'\n";
+    const LocusFrame frame = locus_frame(tracks, max_hz);
+    gp << std::setprecision(6) << "set yrange [0:" << frame.f_max << "]\nset xrange ["
+       << frame.re_min << ":" << frame.re_max << "]\n";
+    // The critical point's label left of the imaginary axis, which is always
+    // inside the frame with room on its left (re_min <= -6 % of the span).
     if (std::isfinite(vc) && std::isfinite(fc))
       gp << "set label 3 'V_crit = " << std::fixed << std::setprecision(2) << vc
          << " m/s' at 0, " << std::defaultfloat << std::setprecision(8) << fc
-         << " point pt 3 ps 2 lc 'red' offset 1,1\n";
+         << " point pt 3 ps 2 lc 'red' right offset -1,1 front\n";
+    const double mark_step = speed_mark_step(v_lo, v_hi);
+    write_speed_marks(gp, tracks, mark_step, frame);
+    std::ostringstream marks;
+    marks << "$speed_marks using 1:2 with points pt 6 ps 1.1 lc rgb '#303030' title "
+          << gnuplot_text("speed marks every " + number_text(mark_step) + " m/s");
     emit(0, "plot " + track_plot_clauses(tracks, tracks_file, "($2>=-20 ? $2 : 1/0):3",
-                                         "linespoints pt 7 ps 0.4"));
-    gp << "unset label 3\nunset arrow 2\nunset yrange\nunset xrange\nset autoscale\n"
+                                         "linespoints pt 7 ps 0.4") +
+                (tracks.empty() ? std::string() : ", \\\n     " + marks.str()));
+    gp << "unset label\nunset arrow 2\nunset yrange\nunset xrange\nset autoscale\n"
        << std::defaultfloat << std::setprecision(8) << "set xrange [" << v_lo << ":" << v_hi
        << "]\n";
     if (std::isfinite(vc))
       gp << "set arrow 1 from " << vc << ", graph 0 to " << vc
          << ", graph 1 nohead dt 2 lw 2 lc 'red'\nset label 1 'V_crit = " << std::fixed
-         << std::setprecision(2) << vc << " m/s' at " << vc << ", graph 0.95 offset 1,0 tc 'red'\n"
+         << std::setprecision(2) << vc << " m/s' at " << vc << ", graph 0.95 "
+         << inside_frame(vc) << " tc 'red'\n"
          << std::defaultfloat << std::setprecision(8);
     if (r.damping_limit_found)
       gp << "set arrow 4 from " << r.damping_limit_speed_m_per_s << ", graph 0 to "
          << r.damping_limit_speed_m_per_s << ", graph 1 nohead dt 3 lw 2 lc 'dark-orange'\n"
          << "set label 4 'damping ratio < " << r.min_damping_ratio << " at " << std::fixed
          << std::setprecision(2) << r.damping_limit_speed_m_per_s << " m/s' at "
-         << r.damping_limit_speed_m_per_s << ", graph 0.88 offset 1,0 tc 'dark-orange'\n"
+         << r.damping_limit_speed_m_per_s << ", graph 0.88 " << inside_frame(r.damping_limit_speed_m_per_s)
+         << " tc 'dark-orange'\n"
          << std::defaultfloat << std::setprecision(8);
     gp << "set title " << titled("damping ratio of the modes below " + band.str() + " Hz")
        << "\nset xlabel 'speed [m/s]'\nset ylabel 'damping ratio [-]'\n"
@@ -370,7 +502,9 @@ void write_json(std::ostream& out, const Model& model, const CriticalSpeedResult
           .field("unstable_side_m_per_s", r.loss.unstable_speed_m_per_s)
           .field("max_real_part_stable_side_per_s", r.loss.stable_max_real_part_per_s)
           .field("max_real_part_unstable_side_per_s", r.loss.unstable_max_real_part_per_s)
-          .field("steady_state_largest_translation_change_m", r.loss.largest_translation_change_m);
+          .field("steady_state_largest_translation_change_m", r.loss.largest_translation_change_m)
+          .field("steady_state_grid_translation_change_m", r.loss.grid_translation_change_m)
+          .field("steady_state_continuous", r.loss.steady_state_continuous);
       j.end_object();
       write_hopf_json(j, hopf);
       const std::vector<ModeShape>& shapes = r.shapes_at_critical;

@@ -1,5 +1,7 @@
 #include <railstab/report/study_report.hpp>
 
+#include <railstab/report/parameter_titles.hpp>
+
 #include <railstab/io/csv.hpp>
 #include <railstab/io/gnuplot.hpp>
 #include <railstab/io/json_writer.hpp>
@@ -171,7 +173,8 @@ std::vector<std::string> plot_study(OutputSet& outputs, const std::string& stem,
     for (size_t k = 0; k < d.varied.size(); ++k) {
       const VariedKey& v = d.varied[k];
       gp << "set title " << gnuplot_text(d.scene_name + ": critical speed" + conditions.str())
-         << "\nset xlabel " << gnuplot_text(v.key) << "\nset ylabel 'critical speed [m/s]'\n"
+         << "\nset xlabel " << gnuplot_text(parameter_axis_title(v.key))
+         << "\nset ylabel 'critical speed [m/s]'\nset xtics " << gnuplot_value_tics(v.values) << "\n"
          << "set xrange [" << std::setprecision(17) << v.from << ":"
          << (v.to > v.from ? v.to : v.from + std::max(1.0, std::abs(v.from))) << "]\nset yrange [*:*]\n";
       std::string plot = "plot ";
@@ -190,7 +193,8 @@ std::vector<std::string> plot_study(OutputSet& outputs, const std::string& stem,
         }
       } else if (d.varied.size() == 2) {  // many curves: coloured by the other key's value
         const std::string& other = d.varied[k == 0 ? 1 : 0].key;
-        gp << "set colorbox\nset cblabel " << gnuplot_text(other) << "\nset palette rgbformulae 33,13,10\n";
+        gp << "set colorbox\nset cblabel " << gnuplot_text(parameter_axis_title(other))
+           << "\nset palette defined " << kViridisPalette << "\n";
         plot += gnuplot_path(data) + " index " + std::to_string(k) +
                 " using 1:2:3 with linespoints pt 7 ps 0.6 lc palette title " +
                 gnuplot_text("one curve per value of " + other);
@@ -203,15 +207,21 @@ std::vector<std::string> plot_study(OutputSet& outputs, const std::string& stem,
     }
     if (d.varied.size() == 2 && d.varied[0].values.size() > 1 && d.varied[1].values.size() > 1) {
       gp << "set colorbox\nset title " << gnuplot_text(d.scene_name + ": stability map, critical speed [m/s]" + conditions.str())
-         << "\nset xlabel " << gnuplot_text(d.varied[1].key) << "\nset ylabel " << gnuplot_text(d.varied[0].key)
-         << "\nset cblabel 'critical speed [m/s]'\nset palette rgbformulae 33,13,10\nset xrange [*:*]\n"
-         << "set yrange [*:*]\nset autoscale xfix\nset autoscale yfix\nunset key\n";
+         << "\nset xlabel " << gnuplot_text(parameter_axis_title(d.varied[1].key))
+         << "\nset ylabel " << gnuplot_text(parameter_axis_title(d.varied[0].key))
+         << "\nset xtics " << gnuplot_value_tics(d.varied[1].values)
+         << "\nset ytics " << gnuplot_value_tics(d.varied[0].values)
+         << "\nset cblabel 'critical speed [m/s]'\nset palette defined " << kViridisPalette
+         << "\nset xrange [*:*]\n"
+         << "set yrange [*:*]\nset autoscale xfix\nset autoscale yfix\nunset key\n"
+         // The cell values on a white box: readable on dark and light cells alike.
+         << "set style textbox opaque fc rgb 'white' noborder margins 1,1\n";
       // The values written in the cells while they fit (up to 15 x 15).
       const bool labels = d.varied[0].values.size() <= 15 && d.varied[1].values.size() <= 15;
       emit(stem + "_study_map",
            "plot " + gnuplot_path(data) + " index 2 using 1:2:3 with image" +
                (labels ? ", " + gnuplot_path(data) +
-                             " index 2 using 1:2:4 with labels "
+                             " index 2 using 1:2:4 with labels boxed "
                              "font ',8' tc 'black'"
                        : std::string()));
     }

@@ -23,7 +23,6 @@ struct PlotSpec {
 std::vector<PlotSpec> plot_specs() {
   const auto wheelsets = [](const Body& b) { return b.wheelset() != nullptr; };
   const auto others = [](const Body& b) { return b.wheelset() == nullptr; };
-  const auto all = [](const Body&) { return true; };
   return {
       {"wheelset_lateral", false, "Lateral shift of the wheelsets", "lateral shift y [mm]", 1, 1e3,
        wheelsets},
@@ -31,10 +30,17 @@ std::vector<PlotSpec> plot_specs() {
       {"body_lateral", false, "Lateral shift of bogie frames and car body", "lateral shift y [mm]", 1,
        1e3, others},
       {"body_yaw", false, "Yaw angle of bogie frames and car body", "yaw [mrad]", 5, 1e3, others},
-      {"roll", false, "Roll angle of all bodies (relative to their track frames)", "roll [mrad]", 3,
-       1e3, all},
-      {"absolute_roll", true, "Roll angle of all bodies in the fixed frame (follows the cant)",
-       "roll [mrad]", 0, 1e3, all},
+      // Roll split by body kind as the other plots are: one plot of every
+      // body's roll had seven lines on the thesis vehicle, unreadable.
+      {"wheelset_roll", false, "Roll angle of the wheelsets (relative to their track frames)",
+       "roll [mrad]", 3, 1e3, wheelsets},
+      {"body_roll", false, "Roll angle of bogie frames and car body (relative to their track frames)",
+       "roll [mrad]", 3, 1e3, others},
+      {"wheelset_absolute_roll", true, "Roll angle of the wheelsets in the fixed frame (follows the cant)",
+       "roll [mrad]", 0, 1e3, wheelsets},
+      {"body_absolute_roll", true,
+       "Roll angle of bogie frames and car body in the fixed frame (follows the cant)", "roll [mrad]",
+       0, 1e3, others},
   };
 }
 
