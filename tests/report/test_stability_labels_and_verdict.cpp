@@ -79,6 +79,27 @@ void expect_agreement(const Written& w, const CriticalSpeedResult& r) {
   EXPECT_EQ(says_whole_range, v == StabilityVerdict::stable_in_range);
 }
 
+// The thesis bogie's search over 20-50 m/s in 5 m/s steps (critical speed
+// 36.90 m/s), shared by the plot tests.
+struct BogieSearch {
+  PreparedScene scene;
+  CriticalSpeedResult result;
+};
+
+const BogieSearch& bogie_search() {
+  static const BogieSearch b = [] {
+    BogieSearch out{prepare_scene(std::string(RAILSTAB_CASES_DIR) + "/thesis_bogie_tangent.toml", {}), {}};
+    CriticalSpeedOptions opt;
+    opt.from_m_per_s = 20.0;
+    opt.to_m_per_s = 50.0;
+    opt.grid_step_m_per_s = 5.0;
+    out.result = find_critical_speed(out.scene.model, out.scene.equilibrium.state,
+                                     out.scene.speed_m_per_s, opt);
+    return out;
+  }();
+  return b;
+}
+
 }  // namespace
 
 TEST(StabilityVerdict, JsonAndMarkdownAgreeInEveryOutcome) {
@@ -124,13 +145,9 @@ TEST(StabilityVerdict, JsonAndMarkdownAgreeInEveryOutcome) {
 
 TEST(StabilityPlots, EveryCurveNamedOneColourPerModeCriticalMarkedPngAndSvg) {
   if (find_gnuplot().empty()) GTEST_SKIP() << "gnuplot not installed";
-  const PreparedScene s =
-      prepare_scene(std::string(RAILSTAB_CASES_DIR) + "/thesis_bogie_tangent.toml", {});
-  CriticalSpeedOptions opt;
-  opt.from_m_per_s = 20.0;
-  opt.to_m_per_s = 50.0;
-  opt.grid_step_m_per_s = 5.0;
-  const CriticalSpeedResult r = find_critical_speed(s.model, s.equilibrium.state, s.speed_m_per_s, opt);
+  const BogieSearch& b = bogie_search();
+  const PreparedScene& s = b.scene;
+  const CriticalSpeedResult& r = b.result;
   ASSERT_TRUE(r.critical_speed_found);
   const Written w = write_all(s.model, r, "plots", true);
   // Track blocks name their mode; every plot clause has a title (no "notitle"
@@ -189,13 +206,9 @@ TEST(StabilityPlots, EveryCurveNamedOneColourPerModeCriticalMarkedPngAndSvg) {
 // imaginary axis; the V_crit label left of the axis, inside the frame.
 TEST(StabilityPlots, RootLocusSpeedMarksAndFrame) {
   if (find_gnuplot().empty()) GTEST_SKIP() << "gnuplot not installed";
-  const PreparedScene s =
-      prepare_scene(std::string(RAILSTAB_CASES_DIR) + "/thesis_bogie_tangent.toml", {});
-  CriticalSpeedOptions opt;
-  opt.from_m_per_s = 20.0;
-  opt.to_m_per_s = 50.0;
-  opt.grid_step_m_per_s = 5.0;
-  const CriticalSpeedResult r = find_critical_speed(s.model, s.equilibrium.state, s.speed_m_per_s, opt);
+  const BogieSearch& b = bogie_search();
+  const PreparedScene& s = b.scene;
+  const CriticalSpeedResult& r = b.result;
   ASSERT_TRUE(r.critical_speed_found);
   const Written w = write_all(s.model, r, "locus", true);
   // Tracks file: per block its name and (speed, re, f).

@@ -77,9 +77,10 @@ struct PlottedTrack {
 
 // The legend names the modes that matter: the critical (hunting) mode, then
 // the lateral-plane modes, then the others, each group by its smallest
-// damping ratio over the speed range, at most this many in all; every other mode is one thin grey curve, counted in
-// one legend entry. Six distinct colours stay distinguishable, and a longer
-// legend of near-identical names is what a client cannot read.
+// damping ratio over the speed range, at most this many in all; every other
+// mode is one thin grey curve, counted in one legend entry. Six distinct
+// colours stay distinguishable, and a longer legend of near-identical names
+// is what a client cannot read.
 constexpr size_t kMaxLabelledTracks = 6;
 
 // Okabe and Ito's colour-blind-safe qualitative palette (without its yellow,
@@ -161,7 +162,7 @@ std::vector<PlottedTrack> write_track_blocks(std::ostream& out, const CriticalSp
     const int id = t.id;
     out << "# track " << id << ": " << gnuplot_text(t.name) << "\n"
         << "# plane: " << (t.lateral ? "lateral" : "vertical/longitudinal") << "\n";
-    for (const auto& p : tracks[id]) {
+    for (const auto& p : t.points) {
       for (int k = 0; k < 4; ++k) {
         if (k) out << ' ';
         put_csv_number(out, p[k], [&] {
@@ -206,7 +207,8 @@ std::string track_plot_clauses(const std::vector<PlottedTrack>& tracks, const st
     if (!t.labelled) continue;
     separate();
     p << gnuplot_path(file) << " index " << k << " using " << using_columns << " with " << style
-      << " lc rgb '" << kTrackColours[size_t(t.colour) % kMaxLabelledTracks] << "' lw " << (t.hunting ? 4.0 : 1.5) << " title "
+      << " lc rgb '" << kTrackColours[size_t(t.colour) % kMaxLabelledTracks] << "' lw "
+      << (t.hunting ? 4.0 : 1.5) << " title "
       << gnuplot_text(t.hunting ? t.name + "  " + t.tag : t.name);
   }
   return p.str();
@@ -300,7 +302,7 @@ void write_speed_marks(std::ostream& gp, const std::vector<PlottedTrack>& tracks
   gp << "EOD\n" << labels.str();
 }
 
-// Ranges on both axes are explicit:// Ranges on both axes are explicit: with no plottable point (a one-speed
+// Ranges on both axes are explicit: with no plottable point (a one-speed
 // grid, every mode above the band) gnuplot's autoscale fails ("x range is
 // invalid"); with them the plot is made, empty. Each plot is written as PNG
 // and, by `replot` on the svg terminal, as SVG.
