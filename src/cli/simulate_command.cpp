@@ -172,7 +172,8 @@ void register_simulate_command(CLI::App& app) {
   auto args = std::make_shared<SimulateArgs>();
   CLI::App* cmd = app.add_subcommand("simulate", "integrate the nonlinear model in time");
   SceneFlags flags;
-  flags.speed = flags.plots = true;
+  flags.speed = flags.arc_length = flags.plots = true;
+  flags.arc_length_help = "arc length (m) of the reference point at t = 0";
   add_scene_flags(cmd, *args, flags);
   add_start_flags(cmd, args->overrides, args->start);
   add_ramp_flags(cmd, args->ramp);

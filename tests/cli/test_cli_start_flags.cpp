@@ -52,6 +52,28 @@ TEST(CliStartFlags, SimulateOnTheHuntingModeSaysSoInItsRunJson) {
   EXPECT_NEAR(std::stod(values[size_t(column - names.begin())]), 0.002, 1e-9);
 }
 
+// --arc-length places the reference point as --set scene.reference_arc_length_m
+// does (docs/commands.md): the same bytes; and it acts: starting 100 m further
+// on, past the clothoid into the arc, gives another motion.
+TEST(CliStartFlags, SimulateArcLengthIsTheSceneKey) {
+  const std::string curve = test::case_path("thesis_bogie_curve");
+  const fs::path dir = test::fresh_dir("cli_start", "arc_length");
+  auto run_at = [&](const std::string& out, const std::vector<std::string>& place) {
+    std::vector<std::string> args = {"simulate", curve, "--speed", "20", "--t-end", "0.2",
+                                     "--no-plots", "--no-error-estimate", "--out", out};
+    args.insert(args.end(), place.begin(), place.end());
+    const test::CliRun run = test::run_railstab(args, dir);
+    EXPECT_EQ(run.exit_code, 0) << run.output;
+    return test::read_text(dir / out / "thesis_bogie_curve_20mps.csv");
+  };
+  const std::string by_flag = run_at("flag", {"--arc-length", "1300"});
+  const std::string by_key = run_at("key", {"--set", "scene.reference_arc_length_m=1300"});
+  const std::string by_default = run_at("default", {});
+  ASSERT_FALSE(by_flag.empty());
+  EXPECT_EQ(by_flag, by_key);
+  EXPECT_NE(by_flag, by_default);
+}
+
 TEST(CliStartFlags, MistakesNameTheFlagAndWriteNothing) {
   const fs::path dir = test::fresh_dir("cli_start", "mistakes");
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
