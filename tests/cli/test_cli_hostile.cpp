@@ -233,7 +233,7 @@ TEST(CliHostile, HostileBodyNamesGiveValidCsvAndJson) {
   run = run_railstab({"equilibrium", scene.string(), "--out", "out"}, dir);
   ASSERT_EQ(run.exit_code, 0) << run.output;
   strings.clear();
-  EXPECT_TRUE(test::is_valid_json(read_text(dir / "out/names_equilibrium.json"), &strings));
+  EXPECT_TRUE(test::is_valid_json(read_text(dir / "out/names_equilibrium_30mps.json"), &strings));
   EXPECT_NE(std::find(strings.begin(), strings.end(), body), strings.end());
   fs::remove_all(dir);
 }

@@ -190,3 +190,19 @@ TEST(CliOutputNames, EveryKeyAndColumnFollowsTheNamingConvention) {
   EXPECT_GT(names, 300u);
   fs::remove_all(dir);
 }
+
+// equilibrium's file carries the speed as eigen's does (docs/outputs.md,
+// "File names"): runs at two speeds into one folder keep both results.
+TEST(CliOutputNames, EquilibriumAtTwoSpeedsKeepsBoth) {
+  const fs::path dir = fs::temp_directory_path() / ("railstab_cli_eq_names_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  for (const std::string speed : {"30", "36.9"}) {
+    const auto run = railstab::test::run_railstab({"equilibrium", kWheelset, "--speed", speed, "--out", "out"}, dir);
+    ASSERT_EQ(run.exit_code, 0) << run.output;
+  }
+  EXPECT_TRUE(fs::is_regular_file(dir / "out" / "textbook_wheelset_equilibrium_30mps.json"));
+  EXPECT_TRUE(fs::is_regular_file(dir / "out" / "textbook_wheelset_equilibrium_36.9mps.json"));
+  EXPECT_FALSE(fs::exists(dir / "out" / "textbook_wheelset_equilibrium.json"));
+  fs::remove_all(dir);
+}

@@ -1,4 +1,5 @@
 #include <railstab/report/equilibrium_report.hpp>
+#include <railstab/io/file_names.hpp>
 
 #include <railstab/model/wheel_forces.hpp>
 
@@ -54,7 +55,7 @@ std::string write_equilibrium_results(const PreparedScene& s, OutputSet& outputs
     shown << " (after " << s.equilibrium.pseudo_transient_steps
           << " pseudo-transient steps from the nominal guess)";
   shown << ", max acceleration residual " << s.equilibrium.max_acceleration << "\n";
-  outputs.write(stem + "_equilibrium.json", [&](std::ostream& out) {
+  outputs.write(stem + "_equilibrium_" + speed_file_tag(s.speed_m_per_s) + ".json", [&](std::ostream& out) {
     JsonWriter j(out);
     j.begin_object().field("scene", model.name).field("speed_m_per_s", s.speed_m_per_s);
     write_conditions_json(j, run_conditions(model), {s.speed_m_per_s});

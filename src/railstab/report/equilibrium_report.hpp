@@ -15,7 +15,7 @@ namespace railstab {
 void check_finite_equilibrium(const Model& model, double speed_m_per_s,
                               const Eigen::MatrixXd& q6, const Eigen::MatrixXd& qd6);
 
-// Adds <stem>_equilibrium.json to `outputs` (staged; the caller commits) and
+// Adds <stem>_equilibrium_<V>mps.json to `outputs` (staged; the caller commits) and
 // returns the summary text (offsets in mm and mrad, wheel loads), rendered
 // with the JSON so that neither exists unless every number is finite.
 std::string write_equilibrium_results(const PreparedScene& scene, OutputSet& outputs,
