@@ -74,7 +74,8 @@ void run_study_command(const StudyArgs& a) {
   for (const VariedKey& v : d.varied)
     for (const double value : {v.from, v.to}) {
       std::vector<SceneValueSetting> s = d.fixed;
-      s.push_back({v.key, value, "--vary " + varied_key_text(v) + " (at " + number_text_exact(value) + ")"});
+      for (const std::string& key : v.keys)
+        s.push_back({key, value, "--vary " + varied_key_text(v) + " (at " + number_text_exact(value) + ")"});
       scene_text_with_values(bytes, a.scene, s);
     }
   std::size_t todo = 0;
@@ -157,7 +158,8 @@ void register_study_commands(CLI::App& app) {
              for (const std::string& t : texts) a->varied.push_back(parse_varied_key(t));
            },
            "a scene key and its values, e.g. --vary elements.yaw_damper.damping_N_s_per_m[0]="
-           "1e5:5e5:1e5 (repeatable: every combination is computed; the first key outermost)")
+           "1e5:5e5:1e5 (repeatable: every combination is computed; the first key outermost); "
+           "keys joined by commas take one value together, e.g. --vary 'K1,K2=1e5:5e5:1e5'")
         ->type_name("KEY=FROM:TO:STEP")
         ->required()
         ->expected(1)

@@ -25,6 +25,24 @@ TEST(StudyDefinition, RangesGiveTheirValuesAndEndExactlyAtTo) {
     EXPECT_THROW(parse_varied_key(bad), std::invalid_argument) << bad;
 }
 
+TEST(StudyDefinition, LinkedKeysShareOneRange) {
+  const VariedKey v = parse_varied_key("e.front.c,e.rear.c=1:3:1");
+  EXPECT_EQ(v.key, "e.front.c,e.rear.c");
+  EXPECT_EQ(v.keys, (std::vector<std::string>{"e.front.c", "e.rear.c"}));
+  EXPECT_EQ(v.values, (std::vector<double>{1, 2, 3}));
+  EXPECT_EQ(varied_key_text(v), "e.front.c,e.rear.c=1:3:1");
+  EXPECT_EQ(parse_varied_key("k=1:2:1").keys, std::vector<std::string>{"k"});
+  for (const char* bad : {"a,=1:2:1", ",a=1:2:1", "a,,b=1:2:1", "a,a=1:2:1"})
+    EXPECT_THROW(parse_varied_key(bad), std::invalid_argument) << bad;
+  StudyDefinition d;
+  d.varied = {parse_varied_key("a,b=1:3:1"), parse_varied_key("b=10:20:10")};
+  EXPECT_THROW(check_study_definition(d), std::invalid_argument);  // b varied twice
+  d.varied.pop_back();
+  EXPECT_NO_THROW(check_study_definition(d));
+  d.fixed = {{"b", 1.0}};
+  EXPECT_THROW(check_study_definition(d), std::invalid_argument);  // b linked and set
+}
+
 TEST(StudyDefinition, CombinationsAreNestedLoopsFirstKeyOutermost) {
   StudyDefinition d;
   d.varied = {parse_varied_key("a=1:3:1"), parse_varied_key("b=10:20:10")};

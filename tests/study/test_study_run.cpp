@@ -10,6 +10,7 @@
 #include <railstab/study/study_record.hpp>
 #include <railstab/study/study_run.hpp>
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -54,6 +55,37 @@ TEST(StudyRun, EachPointIsTheSearchOfTheSceneWithItsValues) {
   // (the kinematic frequency grows with sqrt(lambda)); at least it falls.
   EXPECT_GT(points[0].critical_speed_m_per_s, points[1].critical_speed_m_per_s);
   EXPECT_GT(points[1].critical_speed_m_per_s, points[2].critical_speed_m_per_s);
+}
+
+// Linked keys (--vary 'K1,K2=...') take one value together: each point is the
+// search of the scene with both set, and not that of varying one key alone.
+TEST(StudyRun, LinkedKeysTakeOneValueTogether) {
+  const std::string k0 = "elements.track_holder.stiffness_N_per_m[0]";
+  const std::string k1 = "elements.track_holder.stiffness_N_per_m[1]";
+  const StudyDefinition linked = textbook_study({parse_varied_key(k0 + "," + k1 + "=4e5:8e5:4e5")});
+  const StudyDefinition alone = textbook_study({parse_varied_key(k1 + "=4e5:8e5:4e5")});
+  const std::vector<StudyPoint> points = run_study(linked, {});
+  const std::vector<StudyPoint> single = run_study(alone, {});
+  ASSERT_EQ(points.size(), 2u);
+  ASSERT_EQ(single.size(), 2u);
+  for (const StudyPoint& p : points) {
+    SceneOverrides o;
+    o.values = {{k0, p.values[0]}, {k1, p.values[0]}};
+    const PreparedScene s = prepare_scene(linked.scene_path, o);
+    CriticalSpeedOptions opt;
+    opt.from_m_per_s = 5.0;
+    opt.to_m_per_s = 120.0;
+    opt.grid_step_m_per_s = 5.0;
+    const CriticalSpeedResult r = find_critical_speed(s.model, s.equilibrium.state, s.speed_m_per_s, opt);
+    ASSERT_TRUE(r.critical_speed_found);
+    EXPECT_EQ(p.status, "critical_speed_found");
+    EXPECT_EQ(p.critical_speed_m_per_s, r.critical_speed_m_per_s);
+  }
+  // At 4e5 N/m the longitudinal stiffness differs from the scene's 1e6 only
+  // in the linked study: the yaw stiffness, and so the critical speed, differ.
+  ASSERT_EQ(points[0].status, "critical_speed_found");
+  ASSERT_EQ(single[0].status, "critical_speed_found");
+  EXPECT_GT(std::abs(points[0].critical_speed_m_per_s - single[0].critical_speed_m_per_s), 0.1);
 }
 
 TEST(StudyRun, AFailingCombinationIsARowNotTheEndAndThreadsDoNotChangeResults) {

@@ -40,6 +40,18 @@ VariedKey parse_varied_key(std::string_view text) {
                                 whole + "'");
   VariedKey v;
   v.key = whole.substr(0, eq);
+  for (size_t from = 0;;) {
+    const size_t comma = v.key.find(',', from);
+    std::string one = v.key.substr(from, comma == std::string::npos ? std::string::npos : comma - from);
+    if (one.empty())
+      throw std::invalid_argument("expected KEY1,KEY2=FROM:TO:STEP with no empty key, got '" + whole + "'");
+    for (const std::string& earlier : v.keys)
+      if (earlier == one)
+        throw std::invalid_argument("'" + one + "' is linked to itself in '" + whole + "'");
+    v.keys.push_back(std::move(one));
+    if (comma == std::string::npos) break;
+    from = comma + 1;
+  }
   const std::string_view range = text.substr(eq + 1);
   const size_t c1 = range.find(':');
   const size_t c2 = c1 == std::string_view::npos ? c1 : range.find(':', c1 + 1);
@@ -107,15 +119,17 @@ std::string StudyDefinition::identity() const {
 
 void check_study_definition(const StudyDefinition& d) {
   if (d.varied.empty()) throw std::invalid_argument("--vary: expected at least one KEY=FROM:TO:STEP");
-  for (size_t i = 0; i < d.varied.size(); ++i) {
-    for (size_t j = 0; j < i; ++j)
-      if (d.varied[j].key == d.varied[i].key)
-        throw std::invalid_argument("--vary: " + d.varied[i].key + " is varied twice");
-    for (const SceneValueSetting& f : d.fixed)
-      if (f.key == d.varied[i].key)
-        throw std::invalid_argument("--set " + f.key + ": the key is also varied (--vary " +
-                                    varied_key_text(d.varied[i]) + "); give it once");
-  }
+  for (size_t i = 0; i < d.varied.size(); ++i)
+    for (const std::string& key : d.varied[i].keys) {
+      for (size_t j = 0; j < i; ++j)
+        for (const std::string& earlier : d.varied[j].keys)
+          if (earlier == key)
+            throw std::invalid_argument("--vary: " + key + " is varied twice");
+      for (const SceneValueSetting& f : d.fixed)
+        if (f.key == key)
+          throw std::invalid_argument("--set " + f.key + ": the key is also varied (--vary " +
+                                      varied_key_text(d.varied[i]) + "); give it once");
+    }
   double n = 1.0;
   for (const VariedKey& v : d.varied) n *= double(v.values.size());
   if (n > double(kMaxStudyCombinations))

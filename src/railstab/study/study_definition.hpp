@@ -17,8 +17,12 @@
 
 namespace railstab {
 
+// "KEY1,KEY2,...=FROM:TO:STEP" links keys: every key takes the same value in
+// a combination (front and rear yaw dampers varied together). `key` is the
+// text as given (the study's column and identity), `keys` the scene keys.
 struct VariedKey {
   std::string key;
+  std::vector<std::string> keys;
   double from = 0.0, to = 0.0, step = 0.0;
   std::vector<double> values;  // from, from + step, ..., to (to 12 significant digits)
 };
@@ -26,8 +30,8 @@ struct VariedKey {
 // Bounds a typo (--vary k=0:1e9:1e-9) before anything is allocated.
 inline constexpr std::size_t kMaxStudyCombinations = 1000000;
 
-// "KEY=FROM:TO:STEP": FROM <= TO, STEP > 0, finite; TO must be FROM plus a
-// whole number of steps (to 1e-9 of a step; the last value is then TO
+// "KEY=FROM:TO:STEP" or "KEY1,KEY2=FROM:TO:STEP": FROM <= TO, STEP > 0,
+// finite; no empty or repeated key; TO must be FROM plus a whole number of steps (to 1e-9 of a step; the last value is then TO
 // exactly). Throws std::invalid_argument saying what is wrong.
 VariedKey parse_varied_key(std::string_view text);
 std::string varied_key_text(const VariedKey& varied);  // "KEY=FROM:TO:STEP", exact numbers
@@ -56,7 +60,8 @@ struct StudyDefinition {
 };
 
 // Throws std::invalid_argument (naming --vary / --set) for no varied key, a
-// key varied twice or both varied and set, or too many combinations.
+// key varied twice (alone or linked) or both varied and set, or too many
+// combinations.
 void check_study_definition(const StudyDefinition& definition);
 
 // FNV-1a 64-bit of `bytes`, 16 hex digits (not cryptographic: it tells
