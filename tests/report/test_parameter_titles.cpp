@@ -22,6 +22,8 @@ TEST(ParameterAxisTitle, NameOwnerAndUnitInWords) {
   EXPECT_EQ(parameter_axis_title("bodies.carbody.inertia_kg_m2[2]"), "carbody: inertia, z [kg m^2]");
   // The first word is the quantity even when it is also a unit word.
   EXPECT_EQ(parameter_axis_title("contacts.c.m"), "c: m");
+  EXPECT_EQ(parameter_axis_title("elements.primary.stiffness_N_per_m[0],elements.primary.stiffness_N_per_m[1]"),
+            "primary: stiffness, x [N/m] = primary: stiffness, y [N/m]");  // linked keys
   // An index beyond a 3-vector is named by number.
   EXPECT_EQ(parameter_axis_title("elements.d.table_N[4]"), "d: table, component 4 [N]");
 }

@@ -48,6 +48,9 @@ std::string short_number(double v) {
 }  // namespace
 
 std::string parameter_axis_title(const std::string& key) {
+  // Linked keys ("K1,K2", study --vary): every key's title, as one value.
+  if (const size_t comma = key.find(','); comma != std::string::npos)
+    return parameter_axis_title(key.substr(0, comma)) + " = " + parameter_axis_title(key.substr(comma + 1));
   std::string path = key, component;
   // A vector component: [0] [1] [2] are x, y, z; others by number.
   if (const size_t open = path.rfind('['); open != std::string::npos && path.back() == ']') {

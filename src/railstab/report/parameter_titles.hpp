@@ -10,6 +10,7 @@ namespace railstab {
 // "bodies.carbody.mass_kg" -> "carbody: mass [kg]";
 // "elements.primary.stiffness_N_per_m[1]" -> "primary: stiffness, y [N/m]";
 // "contacts.textbook_linear.conicity" -> "textbook linear: conicity".
+// Linked keys "K1,K2" get both titles joined by " = ".
 // The unit is the key's trailing unit words (the scene format's rule:
 // units in the name, "per" for a division); a key without one gets none.
 std::string parameter_axis_title(const std::string& key);
