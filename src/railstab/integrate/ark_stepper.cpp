@@ -82,7 +82,9 @@ class ArkStepper final : public Stepper {
     ARKStepGetNumJacEvals(mem, &v), s.jacobian_evaluations = v;
     ARKStepGetNumErrTestFails(mem, &v), s.error_test_failures = v;
     ARKStepGetNumNonlinSolvConvFails(mem, &v), s.nonlinear_failures = v;
-    ARKStepGetNumGEvals(mem, &v), s.root_evaluations = v;
+    // Only with root functions: without them the call is an "illegal" error
+    // whose message would be appended to the run's real one.
+    if (n_roots_ > 0) ARKStepGetNumGEvals(mem, &v), s.root_evaluations = v;
     return s;
   }
 

@@ -59,7 +59,9 @@ class CvodeStepper final : public Stepper {
     CVodeGetNumJacEvals(mem, &v), s.jacobian_evaluations = v;
     CVodeGetNumErrTestFails(mem, &v), s.error_test_failures = v;
     CVodeGetNumNonlinSolvConvFails(mem, &v), s.nonlinear_failures = v;
-    CVodeGetNumGEvals(mem, &v), s.root_evaluations = v;
+    // Only with root functions: without them the call is an "illegal" error
+    // whose message would be appended to the run's real one.
+    if (n_roots_ > 0) CVodeGetNumGEvals(mem, &v), s.root_evaluations = v;
     return s;
   }
 

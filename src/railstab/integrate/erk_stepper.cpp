@@ -54,7 +54,9 @@ class ErkStepper final : public Stepper {
     long v = 0;
     ERKStepGetNumSteps(mem, &v), s.steps = v;
     ERKStepGetNumErrTestFails(mem, &v), s.error_test_failures = v;
-    ERKStepGetNumGEvals(mem, &v), s.root_evaluations = v;
+    // Only with root functions: without them the call is an "illegal" error
+    // whose message would be appended to the run's real one.
+    if (n_roots_ > 0) ERKStepGetNumGEvals(mem, &v), s.root_evaluations = v;
     return s;
   }
 
