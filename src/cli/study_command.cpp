@@ -74,8 +74,7 @@ void run_study_command(const StudyArgs& a) {
   for (const VariedKey& v : d.varied)
     for (const double value : {v.from, v.to}) {
       std::vector<SceneValueSetting> s = d.fixed;
-      for (const std::string& key : v.keys)
-        s.push_back({key, value, "--vary " + varied_key_text(v) + " (at " + number_text_exact(value) + ")"});
+      for (SceneValueSetting& linked : varied_settings(v, value)) s.push_back(std::move(linked));
       scene_text_with_values(bytes, a.scene, s);
     }
   std::size_t todo = 0;

@@ -30,6 +30,19 @@ StudyDefinition textbook_study(std::vector<VariedKey> varied) {
   return d;
 }
 
+// The critical-speed search a study point must equal: the scene with
+// `values` set, on the study's grid.
+CriticalSpeedResult search_with(const StudyDefinition& d, std::vector<SceneValueSetting> values) {
+  SceneOverrides o;
+  o.values = std::move(values);
+  const PreparedScene s = prepare_scene(d.scene_path, o);
+  CriticalSpeedOptions opt;
+  opt.from_m_per_s = d.analysis.from_m_per_s;
+  opt.to_m_per_s = d.analysis.to_m_per_s;
+  opt.grid_step_m_per_s = d.analysis.grid_step_m_per_s;
+  return find_critical_speed(s.model, s.equilibrium.state, s.speed_m_per_s, opt);
+}
+
 }  // namespace
 
 TEST(StudyRun, EachPointIsTheSearchOfTheSceneWithItsValues) {
@@ -37,14 +50,7 @@ TEST(StudyRun, EachPointIsTheSearchOfTheSceneWithItsValues) {
   const std::vector<StudyPoint> points = run_study(d, {});
   ASSERT_EQ(points.size(), 3u);
   for (const StudyPoint& p : points) {
-    SceneOverrides o;
-    o.values = {{"contacts.textbook_linear.conicity", p.values[0]}};
-    const PreparedScene s = prepare_scene(d.scene_path, o);
-    CriticalSpeedOptions opt;
-    opt.from_m_per_s = 5.0;
-    opt.to_m_per_s = 120.0;
-    opt.grid_step_m_per_s = 5.0;
-    const CriticalSpeedResult r = find_critical_speed(s.model, s.equilibrium.state, s.speed_m_per_s, opt);
+    const CriticalSpeedResult r = search_with(d, {{"contacts.textbook_linear.conicity", p.values[0]}});
     ASSERT_TRUE(r.critical_speed_found);
     EXPECT_EQ(p.status, "critical_speed_found");
     EXPECT_EQ(p.critical_speed_m_per_s, r.critical_speed_m_per_s);
@@ -69,14 +75,7 @@ TEST(StudyRun, LinkedKeysTakeOneValueTogether) {
   ASSERT_EQ(points.size(), 2u);
   ASSERT_EQ(single.size(), 2u);
   for (const StudyPoint& p : points) {
-    SceneOverrides o;
-    o.values = {{k0, p.values[0]}, {k1, p.values[0]}};
-    const PreparedScene s = prepare_scene(linked.scene_path, o);
-    CriticalSpeedOptions opt;
-    opt.from_m_per_s = 5.0;
-    opt.to_m_per_s = 120.0;
-    opt.grid_step_m_per_s = 5.0;
-    const CriticalSpeedResult r = find_critical_speed(s.model, s.equilibrium.state, s.speed_m_per_s, opt);
+    const CriticalSpeedResult r = search_with(linked, {{k0, p.values[0]}, {k1, p.values[0]}});
     ASSERT_TRUE(r.critical_speed_found);
     EXPECT_EQ(p.status, "critical_speed_found");
     EXPECT_EQ(p.critical_speed_m_per_s, r.critical_speed_m_per_s);

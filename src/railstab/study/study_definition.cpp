@@ -89,6 +89,13 @@ std::string varied_key_text(const VariedKey& v) {
          number_text_exact(v.step);
 }
 
+std::vector<SceneValueSetting> varied_settings(const VariedKey& v, double value) {
+  const std::string origin = "--vary " + varied_key_text(v) + " (at " + number_text_exact(value) + ")";
+  std::vector<SceneValueSetting> settings;
+  for (const std::string& key : v.keys) settings.push_back({key, value, origin});
+  return settings;
+}
+
 std::size_t StudyDefinition::combinations() const {
   std::size_t n = varied.empty() ? 0 : 1;
   for (const VariedKey& v : varied) n *= v.values.size();

@@ -31,10 +31,14 @@ struct VariedKey {
 inline constexpr std::size_t kMaxStudyCombinations = 1000000;
 
 // "KEY=FROM:TO:STEP" or "KEY1,KEY2=FROM:TO:STEP": FROM <= TO, STEP > 0,
-// finite; no empty or repeated key; TO must be FROM plus a whole number of steps (to 1e-9 of a step; the last value is then TO
-// exactly). Throws std::invalid_argument saying what is wrong.
+// finite; no empty or repeated key; TO must be FROM plus a whole number of
+// steps (to 1e-9 of a step; the last value is then TO exactly). Throws
+// std::invalid_argument saying what is wrong.
 VariedKey parse_varied_key(std::string_view text);
 std::string varied_key_text(const VariedKey& varied);  // "KEY=FROM:TO:STEP", exact numbers
+// The scene settings of `varied` at `value`: one per linked key, each naming
+// its origin ("--vary K=... (at value)") for error messages.
+std::vector<SceneValueSetting> varied_settings(const VariedKey& varied, double value);
 
 // The analysis every combination runs (critical-speed's flags).
 struct StudyAnalysis {

@@ -40,10 +40,8 @@ StudyPoint run_study_point(const StudyDefinition& d, std::size_t index) {
     SceneOverrides overrides;
     overrides.values = d.fixed;
     for (size_t k = 0; k < d.varied.size(); ++k)
-      for (const std::string& key : d.varied[k].keys)  // linked keys: one value
-        overrides.values.push_back({key, p.values[k],
-                                    "--vary " + varied_key_text(d.varied[k]) + " (at " +
-                                        number_text_exact(p.values[k]) + ")"});
+      for (SceneValueSetting& s : varied_settings(d.varied[k], p.values[k]))
+        overrides.values.push_back(std::move(s));
     const PreparedScene s = prepare_scene(d.scene_path, overrides);
     CriticalSpeedOptions opt;
     opt.from_m_per_s = d.analysis.from_m_per_s;
