@@ -16,9 +16,12 @@
 #include <railstab/io/gnuplot.hpp>
 #include <railstab/io/output_files.hpp>
 #include <railstab/io/output_set.hpp>
+#include <railstab/io/ride_files.hpp>
 #include <railstab/model/equations_of_motion.hpp>
 #include <railstab/report/simulation_report.hpp>
+#include <railstab/report/ride_plots.hpp>
 #include <railstab/report/time_plots.hpp>
+#include <railstab/ride/ride_history.hpp>
 
 #include <chrono>
 #include <filesystem>
@@ -108,9 +111,15 @@ void run_simulate(const SimulateArgs& args) {
   // All files are staged and committed together (io/output_set.hpp): data
   // files, run summary, then the plots, which are views of the CSVs.
   const std::string stem = file_stem(model.name) + "_" + speed_file_tag(scene.speed_m_per_s);
-  const std::string summary = simulation_run_json(model, scene.speed_m_per_s, opt, traj, error, start);
+  // Wheel forces and accelerations at every output time (ride/ride_history.hpp),
+  // computed once: the CSVs, the plots and the summary read them.
+  const RideHistory ride =
+      ride_history(model, scene.speed_m_per_s, traj, scene.spec.assessment.prudhomme_factor);
+  const std::string summary =
+      simulation_run_json(model, scene.speed_m_per_s, opt, traj, error, start, &ride);
   OutputSet outputs(args.out_dir);
   for (const std::string& name : time_plot_file_names(stem)) outputs.replaces(name);
+  for (const std::string& name : ride_plot_file_names(stem)) outputs.replaces(name);
   PlottedCsv trajectory_csv, roll_csv;
   auto write_trajectory = [&](std::ostream& out) { write_trajectory_csv(out, model, scene.speed_m_per_s, traj); };
   if (args.csv.empty()) {
@@ -127,10 +136,22 @@ void run_simulate(const SimulateArgs& args) {
   roll_csv.staged_path = std::filesystem::absolute(outputs.write(
       roll_csv.final_path, [&](std::ostream& out) { write_absolute_roll_csv(out, model, scene.speed_m_per_s, traj); }));
   roll_csv.header_lines = csv_physical_lines(absolute_roll_csv_header(model));
+  PlottedCsv forces_csv, accelerations_csv;
+  forces_csv.final_path = stem + "_wheel_forces.csv";
+  forces_csv.staged_path = std::filesystem::absolute(outputs.write(
+      forces_csv.final_path, [&](std::ostream& out) { write_wheel_forces_csv(out, model, ride); }));
+  forces_csv.header_lines = csv_physical_lines(wheel_forces_csv_header(model, ride));
+  accelerations_csv.final_path = stem + "_accelerations.csv";
+  accelerations_csv.staged_path = std::filesystem::absolute(outputs.write(
+      accelerations_csv.final_path, [&](std::ostream& out) { write_accelerations_csv(out, ride); }));
+  accelerations_csv.header_lines = csv_physical_lines(accelerations_csv_header(ride));
   outputs.write(stem + "_run.json", [&](std::ostream& out) { out << summary; });
-  if (args.plots)
+  if (args.plots) {
     plot_time_histories(model, scene.speed_m_per_s, outputs, stem, trajectory_csv, roll_csv, opt.t_start_s,
                         traj.times_s.back());
+    plot_ride_quantities(model, scene.speed_m_per_s, outputs, stem, ride, forces_csv,
+                         accelerations_csv, opt.t_start_s, traj.times_s.back());
+  }
   list_written(outputs.commit(), std::cout);
   const double simulated = traj.times_s.back() - opt.t_start_s;
   std::cout << "integrator " << IntegratorVariant{opt.kind, opt.order}.label() << " rtol "

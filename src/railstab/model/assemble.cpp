@@ -72,6 +72,8 @@ Model assemble_model(const SceneSpec& scene, const std::vector<Eigen::Vector3d>&
       body.initial_offset(i) = spec.initial_offset[i];
       body.initial_rate(i) = spec.initial_rate[i];
     }
+    for (const MeasurePointSpec& point : spec.measure_points)
+      model.measure_points.push_back({int(model.bodies.size()), point.name, point.position_m});
     model.bodies.push_back(body);
   }
 

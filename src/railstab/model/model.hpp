@@ -36,6 +36,14 @@
 
 namespace railstab {
 
+// A point fixed in a rigid body where accelerations are reported
+// (ride/point_acceleration.hpp), from the scene's [[bodies.measure_points]].
+struct MeasurePoint {
+  int body = 0;                 // index into bodies (never a wheelset)
+  std::string name;             // as in the scene; reported as "<body>.<name>"
+  Eigen::Vector3d position_B_m = Eigen::Vector3d::Zero();  // from the CM, body axes
+};
+
 template <class S> struct ModelTpl {
   std::string name;
   std::string source_path;
@@ -48,6 +56,7 @@ template <class S> struct ModelTpl {
   std::vector<BodyTpl<S>> bodies;
   std::vector<ModelContactTpl<S>> contacts;
   std::vector<ElementTpl<S>> elements;
+  std::vector<MeasurePoint> measure_points;
   int n_coordinates = 0;      // free coordinates q (and as many rates u)
   int n_internal_states = 0;  // element states z
   // For each free coordinate: (body, coordinate index 0..5).
@@ -127,6 +136,7 @@ template <class S> struct ModelTpl {
     for (const ElementTpl<S>& e : elements)
       m.elements.push_back(std::visit(
           [](const auto& el) -> ElementTpl<S2> { return el.template cast<S2>(); }, e));
+    m.measure_points = measure_points;
     m.n_coordinates = n_coordinates;
     m.n_internal_states = n_internal_states;
     m.coordinate_of_state = coordinate_of_state;

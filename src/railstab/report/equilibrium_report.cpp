@@ -2,6 +2,7 @@
 #include <railstab/io/file_names.hpp>
 
 #include <railstab/model/wheel_forces.hpp>
+#include <railstab/ride/wheelset_forces.hpp>
 
 #include <railstab/io/json_writer.hpp>
 #include <railstab/model/equations_of_motion.hpp>
@@ -42,6 +43,15 @@ std::string write_equilibrium_results(const PreparedScene& s, OutputSet& outputs
   rhs(model, s.speed_m_per_s, 0.0, s.equilibrium.state, &details);
   const std::vector<WheelForces> wheels =
       wheel_forces(model, s.speed_m_per_s, 0.0, s.equilibrium.state);
+  // Sum Y, angle of attack and Delta Q/Q0 (ride/wheelset_forces.hpp).
+  const std::vector<WheelsetForces> wheelsets =
+      wheelset_forces(model, s.speed_m_per_s, 0.0, s.equilibrium.state,
+                      static_wheel_loads(model, s.speed_m_per_s), s.spec.assessment.prudhomme_factor);
+  auto wheelset_of = [&](int body) -> const WheelsetForces* {
+    for (const WheelsetForces& f : wheelsets)
+      if (f.body == body) return &f;
+    return nullptr;
+  };
   Eigen::MatrixXd q6, qd6;
   model.full_coordinates(0.0, s.speed_m_per_s, s.equilibrium.state, q6, qd6);
   check_finite_equilibrium(model, s.speed_m_per_s, q6, qd6);
@@ -105,6 +115,16 @@ std::string write_equilibrium_results(const PreparedScene& s, OutputSet& outputs
               << ", " << w.creep_force_y_N << " N, " << w.spin_moment_N_m << " N m)\n";
       }
       j.end_array();
+      const WheelsetForces* ws = wheelset_of(int(b));
+      if (ws) {
+        j.field("sum_y_N", ws->sum_y_N)
+            .field("angle_of_attack_rad", ws->angle_of_attack_rad)
+            .field("static_axle_load_N", ws->static_axle_load_N)
+            .field("prudhomme_limit_N", ws->prudhomme_limit_N)
+            .field("sum_y_over_prudhomme_limit", std::abs(ws->sum_y_N) / ws->prudhomme_limit_N);
+        shown << "      Sum Y " << ws->sum_y_N << " N (Prud'homme's limit " << ws->prudhomme_limit_N
+              << " N), angle of attack " << ws->angle_of_attack_rad * 1e3 << " mrad\n";
+      }
       // Y, Q and Y/Q per wheel (model/wheel_forces.hpp), against Nadal.
       j.key("wheel_forces").begin_array();
       for (const WheelForces& w : wheels) {
@@ -113,6 +133,11 @@ std::string write_equilibrium_results(const PreparedScene& s, OutputSet& outputs
             .field("side", w.side > 0 ? "left" : "right")
             .field("lateral_force_N", w.Y_N)
             .field("wheel_load_N", w.Q_N);
+        if (ws) {
+          const double unloading = w.side > 0 ? ws->left_delta_q_over_q0 : ws->right_delta_q_over_q0;
+          j.field("static_wheel_load_N", w.side > 0 ? ws->left_static_load_N : ws->right_static_load_N)
+              .field("delta_q_over_q0", unloading);
+        }
         if (w.y_over_q) j.field("y_over_q", *w.y_over_q);
         else j.key("y_over_q").null();
         if (w.nadal_limit) j.field("nadal_limit", *w.nadal_limit);
@@ -122,6 +147,7 @@ std::string write_equilibrium_results(const PreparedScene& s, OutputSet& outputs
               << " N, Q " << w.Q_N << " N";
         if (w.y_over_q) shown << ", Y/Q " << *w.y_over_q;
         if (w.nadal_limit) shown << " (Nadal's limit " << *w.nadal_limit << ")";
+        if (ws) shown << ", Delta Q/Q0 " << (w.side > 0 ? ws->left_delta_q_over_q0 : ws->right_delta_q_over_q0);
         shown << "\n";
       }
       j.end_array().end_object();

@@ -11,7 +11,7 @@ namespace railstab {
 std::string simulation_run_json(const Model& model, double speed_m_per_s,
                                 const IntegrationOptions& opt, const Trajectory& traj,
                                 const std::optional<ErrorEstimate>& error,
-                                const RunStart& start) {
+                                const RunStart& start, const RideHistory* ride) {
   std::ostringstream out;
   JsonWriter j(out);
   const double simulated = traj.times_s.back() - opt.t_start_s;
@@ -94,6 +94,32 @@ std::string simulation_run_json(const Model& model, double speed_m_per_s,
       j.end_object();
     }
     j.end_object();
+  }
+  if (ride) {
+    j.key("ride").begin_object().field("prudhomme_factor", ride->prudhomme_factor);
+    j.key("wheelsets").begin_array();
+    const std::vector<WheelsetExtremes> extremes = wheelset_extremes(*ride);
+    for (size_t w = 0; w < extremes.size(); ++w) {
+      const WheelsetExtremes& e = extremes[w];
+      const StaticWheelLoad& load = ride->static_loads[w];
+      j.begin_object()
+          .field("name", model.bodies[size_t(e.body)].name)
+          .field("static_wheel_load_left_N", load.left_N)
+          .field("static_wheel_load_right_N", load.right_N)
+          .field("max_abs_sum_y_N", e.max_abs_sum_y_N)
+          .field("max_abs_sum_y_time_s", e.max_abs_sum_y_time_s)
+          .field("prudhomme_limit_N", e.prudhomme_limit_N)
+          .field("max_abs_sum_y_over_prudhomme_limit", e.max_abs_sum_y_N / e.prudhomme_limit_N)
+          .field("max_delta_q_over_q0", e.max_delta_q_over_q0);
+      j.key("max_y_over_q_left");
+      if (e.max_y_over_q_left) j.value(*e.max_y_over_q_left);
+      else j.null();
+      j.key("max_y_over_q_right");
+      if (e.max_y_over_q_right) j.value(*e.max_y_over_q_right);
+      else j.null();
+      j.end_object();
+    }
+    j.end_array().end_object();
   }
   j.end_object();
   return out.str();

@@ -6,6 +6,7 @@
 #include <railstab/integrate/integrator.hpp>
 #include <railstab/integrate/work_precision.hpp>
 #include <railstab/model/model.hpp>
+#include <railstab/ride/ride_history.hpp>
 
 #include <complex>
 #include <optional>
@@ -26,10 +27,12 @@ struct RunStart {
 };
 
 // The summary as JSON text, rendered before any file is written so a failure
-// here leaves no partial set of outputs.
+// here leaves no partial set of outputs. With `ride`, a "ride" object: the
+// static wheel loads and per wheelset the largest |Sum Y| against
+// Prud'homme's limit, the largest Y/Q per wheel and Delta Q/Q0.
 std::string simulation_run_json(const Model& model, double speed_m_per_s,
                                 const IntegrationOptions& opt, const Trajectory& traj,
                                 const std::optional<ErrorEstimate>& error,
-                                const RunStart& start = {});
+                                const RunStart& start = {}, const RideHistory* ride = nullptr);
 
 }  // namespace railstab

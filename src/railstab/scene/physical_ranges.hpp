@@ -46,6 +46,10 @@ inline constexpr PhysicalRange inertia_kg_m2{"a principal moment of inertia", 1e
 // A body's nominal centre of mass in its track frame, and element attachment
 // points in body frames: a vehicle is < 30 m long and < 5 m high.
 inline constexpr PhysicalRange coordinate_m{"a coordinate", -100.0, 100.0, "m"};
+// A measure point from its body's CM: within a car body's half length.
+inline constexpr PhysicalRange measure_point_m{"a measure point position", -50.0, 50.0, "m"};
+// alpha of Prud'homme's limit: 0.85 (freight) and 1.0 (others) in EN 14363.
+inline constexpr PhysicalRange prudhomme_factor{"a Prud'homme factor alpha", 0.0, 2.0, "", true};
 // track_offset_m: a train of several vehicles spans < 1 km.
 inline constexpr PhysicalRange track_offset_m{"a track offset", -1e4, 1e4, "m"};
 // initial_offset: a perturbation, not a new position (flange clearance ~10 mm;

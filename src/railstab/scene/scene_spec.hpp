@@ -35,6 +35,14 @@
 namespace railstab {
 
 // --- Bodies ------------------------------------------------------------------------
+// A point fixed in a rigid body where `simulate` reports accelerations
+// ([[bodies.measure_points]]; docs/ride_quantities.md), e.g. the bogie frame
+// above the leading wheelset, where EN 14363 places its accelerometer.
+struct MeasurePointSpec {
+  std::string name;
+  Eigen::Vector3d position_m = Eigen::Vector3d::Zero();  // from the CM, body axes (x fwd, y left, z up)
+};
+
 struct BodySpec {
   std::string name;
   bool is_wheelset = false;
@@ -46,6 +54,7 @@ struct BodySpec {
   std::array<double, 6> initial_offset = {0, 0, 0, 0, 0, 0};  // m and rad, added to nominal
   std::array<double, 6> initial_rate = {0, 0, 0, 0, 0, 0};    // m/s and rad/s
   std::string contact;  // wheelsets: name of a ContactSpec
+  std::vector<MeasurePointSpec> measure_points;  // rigid bodies only
 };
 
 // --- Force elements -------------------------------------------------------------------
@@ -73,6 +82,15 @@ struct SimulationSpec {
   double absolute_tolerance = 1e-6;  // m, rad, m/s, rad/s alike
 };
 
+// Limits the ride and assessment quantities are judged against
+// ([assessment]; docs/ride_quantities.md).
+struct AssessmentSpec {
+  // alpha of Prud'homme's limit (Sum Y)_lim = alpha (10 kN + P0 / 3) on the
+  // track shift force of a wheelset, P0 its static axle load in kN: 1.0 for
+  // locomotives and passenger vehicles, 0.85 for freight wagons (EN 14363).
+  double prudhomme_factor = 1.0;
+};
+
 struct SceneSpec {
   std::string name;
   std::string source_path;  // file it was read from, for messages
@@ -88,6 +106,7 @@ struct SceneSpec {
   std::vector<ElementSpec> elements;
   PreloadMode preload = PreloadMode::balance_gravity_at_nominal;
   SimulationSpec simulation;
+  AssessmentSpec assessment;
 };
 
 }  // namespace railstab

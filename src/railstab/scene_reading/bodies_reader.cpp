@@ -44,6 +44,27 @@ std::array<double, 6> read_coordinate_values(const TableReader& body, std::strin
   return values;
 }
 
+// [[bodies.measure_points]]: name and position_m (from the CM, body axes);
+// only on rigid bodies: a wheelset's body frame spins.
+std::vector<MeasurePointSpec> read_measure_points(const TableReader& body, bool is_wheelset) {
+  std::vector<MeasurePointSpec> points;
+  if (!body.has("measure_points")) return points;
+  if (is_wheelset)
+    body.fail("measure_points",
+              "no measure points on a wheelset (its frame spins; put them on the bogie frame)",
+              "a measure_points array");
+  for (const TableReader& point : body.tables_in_array("measure_points", {"name", "position_m"})) {
+    MeasurePointSpec spec;
+    spec.name = point.text("name");
+    spec.position_m = point.vector3("position_m", "m");
+    for (const MeasurePointSpec& earlier : points)
+      if (earlier.name == spec.name)
+        point.fail("name", "a measure point name unique within the body", quoted(spec.name) + " twice");
+    points.push_back(spec);
+  }
+  return points;
+}
+
 BodySpec read_body(const TableReader& body) {
   BodySpec spec;
   spec.name = body.text("name");
@@ -63,6 +84,7 @@ BodySpec read_body(const TableReader& body) {
                            "no contact on a rigid_body (only wheelsets touch the rails)");
   spec.initial_offset = read_coordinate_values(body, "initial_offset", kOffsetKeys);
   spec.initial_rate = read_coordinate_values(body, "initial_rate", kRateKeys);
+  spec.measure_points = read_measure_points(body, spec.is_wheelset);
   return spec;
 }
 
@@ -72,7 +94,7 @@ std::vector<BodySpec> read_bodies(const TableReader& top) {
   std::vector<BodySpec> bodies;
   for (const TableReader& body : top.tables_in_array(
            "bodies", {"name", "type", "mass_kg", "inertia_kg_m2", "track_offset_m", "position_m",
-                      "free", "contact", "initial_offset", "initial_rate"}))
+                      "free", "contact", "initial_offset", "initial_rate", "measure_points"}))
     bodies.push_back(read_body(body));
   return bodies;
 }

@@ -81,6 +81,8 @@ class SceneChecker {
       }
     }
     require_in("scene.reference_arc_length_m", scene_.reference_arc_length_m, r::arc_length_m);
+    require_in("assessment.prudhomme_factor", scene_.assessment.prudhomme_factor,
+               r::prudhomme_factor);
   }
 
   void check_simulation() const {
@@ -236,6 +238,12 @@ class SceneChecker {
                  body.initial_offset[c], angle ? r::offset_rad : r::offset_m);
       require_in(child_path(child_path(path, "initial_rate"), kRateKeys[c].key),
                  body.initial_rate[c], angle ? r::rate_rad_per_s : r::rate_m_per_s);
+    }
+    for (size_t p = 0; p < body.measure_points.size(); ++p) {
+      const std::string point = indexed_path(child_path(path, "measure_points"), p);
+      check_name(child_path(point, "name"), body.measure_points[p].name);
+      require_each_in(child_path(point, "position_m"), body.measure_points[p].position_m,
+                      r::measure_point_m);
     }
     if (body.is_wheelset) {
       check_wheelset_contact(child_path(path, "contact"), body);

@@ -18,7 +18,8 @@ namespace {
 // The sections of a scene file (the top-level keys), also when only
 // [contacts] is read: any other key is a misspelt section.
 const std::vector<std::string_view> kSceneSections = {"scene",    "track",      "contacts", "bodies",
-                                                      "elements", "simulation", "train"};
+                                                      "elements", "simulation", "train",
+                                                      "assessment"};
 }  // namespace
 
 SceneAsRead read_scene_document(const std::string& toml_text, const std::string& source_name) {
@@ -35,6 +36,7 @@ SceneAsRead read_scene_document(const std::string& toml_text, const std::string&
   scene.elements = std::move(elements.specs);
   read.element_paths = std::move(elements.file_paths);
   scene.simulation = read_simulation(top);
+  scene.assessment = read_assessment(top);
   read_train(top, scene, read.element_paths);
   return read;
 }

@@ -50,4 +50,12 @@ SimulationSpec read_simulation(const TableReader& top) {
   return spec;
 }
 
+AssessmentSpec read_assessment(const TableReader& top) {
+  const std::optional<TableReader> assessment = top.optional_table("assessment", {"prudhomme_factor"});
+  AssessmentSpec spec;
+  if (!assessment) return spec;
+  spec.prudhomme_factor = assessment->number_or("prudhomme_factor", "", spec.prudhomme_factor);
+  return spec;
+}
+
 }  // namespace railstab::scene_reading
