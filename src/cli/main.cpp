@@ -8,6 +8,7 @@
 #include "cli/simulate_command.hpp"
 #include "cli/stability_commands.hpp"
 #include "cli/study_command.hpp"
+#include "cli/track_command.hpp"
 #include "cli/verify_command.hpp"
 #include "cli/work_precision_command.hpp"
 #include <railstab/setup/model_error_context.hpp>
@@ -30,6 +31,7 @@ int main(int argc, char** argv) {
   railstab::register_contact_geometry_command(app);
   railstab::register_check_command(app);
   railstab::register_bifurcation_command(app);
+  railstab::register_track_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -2,6 +2,9 @@
 
 #include <railstab/scene/physical_ranges.hpp>
 
+#include <cmath>
+#include <cstdint>
+
 namespace railstab::scene_reading {
 
 namespace {
@@ -59,12 +62,54 @@ TrackSegmentSpec read_segment(const TableReader& segment, double start_curvature
   return spec;
 }
 
+const Choices<IrregularitySpectrum> kSpectra = choices_of(kIrregularitySpectrumNames);
+
+// [track.irregularities] (irregularity/irregularity_spec.hpp).
+IrregularitySpec read_irregularities(const TableReader& table) {
+  IrregularitySpec spec;
+  spec.spectrum = table.choice("psd", kSpectra);
+  const double seed = table.number_or("seed", "", double(spec.seed));
+  if (!(seed >= 0.0 && seed <= 9007199254740992.0 && seed == std::floor(seed)))
+    table.fail("seed", "a whole number in [0, 2^53]", format_number(seed));
+  spec.seed = std::uint64_t(seed);
+  spec.wavelength_min_m = table.number_or("wavelength_min_m", "m", spec.wavelength_min_m);
+  spec.wavelength_max_m = table.number_or("wavelength_max_m", "m", spec.wavelength_max_m);
+  spec.start_m = table.number_or("start_m", "m", spec.start_m);
+  spec.length_m = table.number_or("length_m", "m", spec.length_m);
+  spec.sample_interval_m = table.number_or("sample_interval_m", "m", spec.sample_interval_m);
+  const double components = table.number_or("components", "", double(spec.components));
+  if (!(components >= 1.0 && components <= 100000.0 && components == std::floor(components)))
+    table.fail("components", "a whole number of cosines in [1, 100000]", format_number(components));
+  spec.components = int(components);
+  spec.amplitude_scale = table.number_or("amplitude_scale", "", spec.amplitude_scale);
+  spec.fade_in_m = table.number_or("fade_in_m", "m", spec.fade_in_m);
+  if (!(spec.wavelength_min_m > 0.0 && spec.wavelength_min_m < spec.wavelength_max_m &&
+        spec.wavelength_max_m <= 1000.0))
+    table.fail("wavelength_max_m", "wavelength_min_m > 0 below wavelength_max_m <= 1000 m",
+               format_number(spec.wavelength_min_m) + " to " + format_number(spec.wavelength_max_m) + " m");
+  if (!(spec.sample_interval_m >= 0.01 && spec.sample_interval_m <= spec.wavelength_min_m / 4.0))
+    table.fail("sample_interval_m", "[0.01 m, wavelength_min_m / 4] (four samples per shortest wave)",
+               format_number(spec.sample_interval_m));
+  if (!(spec.length_m > 0.0 && spec.length_m <= 1e5))
+    table.fail("length_m", "(0, 1e5] m", format_number(spec.length_m));
+  if (!(spec.length_m / spec.sample_interval_m * spec.components <= 4e9))
+    table.fail("components", "length_m / sample_interval_m x components <= 4e9 (the synthesis work)",
+               format_number(spec.length_m / spec.sample_interval_m * spec.components));
+  if (!(spec.start_m >= 0.0 && spec.start_m <= 1e7))
+    table.fail("start_m", "[0, 1e7] m", format_number(spec.start_m));
+  if (!(spec.amplitude_scale >= 0.0 && spec.amplitude_scale <= 10.0))
+    table.fail("amplitude_scale", "[0, 10]", format_number(spec.amplitude_scale));
+  if (!(spec.fade_in_m >= 0.0 && spec.fade_in_m <= spec.length_m))
+    table.fail("fade_in_m", "[0, length_m]", format_number(spec.fade_in_m));
+  return spec;
+}
+
 }  // namespace
 
 TrackSpec read_track(const TableReader& top) {
   const TableReader track = top.table(
       "track", {"start_x_m", "start_y_m", "start_z_m", "start_heading_rad", "start_curvature_per_m",
-                "start_cant_m", "rail_contact_distance_m", "segments"});
+                "start_cant_m", "rail_contact_distance_m", "segments", "irregularities"});
   TrackSpec spec;
   spec.start_x_m = track.number_or("start_x_m", "m", spec.start_x_m);
   spec.start_y_m = track.number_or("start_y_m", "m", spec.start_y_m);
@@ -84,6 +129,10 @@ TrackSpec read_track(const TableReader& top) {
     curvature = spec.segments.back().end_curvature_per_m;
     cant = spec.segments.back().end_cant_m;
   }
+  if (const std::optional<TableReader> irregularities = track.optional_table(
+          "irregularities", {"psd", "seed", "wavelength_min_m", "wavelength_max_m", "start_m", "length_m",
+                             "sample_interval_m", "components", "amplitude_scale", "fade_in_m"}))
+    spec.irregularities = read_irregularities(*irregularities);
   return spec;
 }
 

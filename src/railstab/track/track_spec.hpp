@@ -2,6 +2,9 @@
 // The track as a scene describes it ([track], [[track.segments]];
 // conventions: scene/scene_spec.hpp).
 #include <railstab/core/name_table.hpp>
+#include <railstab/irregularity/irregularity_spec.hpp>
+
+#include <optional>
 
 #include <string_view>
 #include <vector>
@@ -39,6 +42,8 @@ struct TrackSpec {
   double start_cant_m = 0.0;
   double rail_contact_distance_m = 1.5;  // D in phi = asin(cant / D) (ERRATA 2)
   std::vector<TrackSegmentSpec> segments;
+  // [track.irregularities]; none: perfect track.
+  std::optional<IrregularitySpec> irregularities;
 };
 
 }  // namespace railstab

@@ -1,0 +1,133 @@
+#include <railstab/report/irregularity_report.hpp>
+
+#include <railstab/io/csv.hpp>
+#include <railstab/io/gnuplot.hpp>
+#include <railstab/io/json_writer.hpp>
+
+#include <filesystem>
+#include <iomanip>
+#include <numbers>
+#include <sstream>
+
+namespace railstab {
+
+namespace {
+
+std::string channel_name(int c) { return std::string(name_in(kIrregularityChannelNames, IrregularityChannel(c))); }
+
+}  // namespace
+
+std::string write_irregularity_report(const TrackIrregularities& irr, const IrregularityCheck& check,
+                                      const std::string& scene_name, OutputSet& outputs,
+                                      const std::string& stem, bool plots) {
+  const IrregularitySpec& spec = irr.spec();
+  const std::string channels_csv = stem + "_irregularities.csv";
+  const std::string psd_csv = stem + "_irregularity_psd.csv";
+  const std::filesystem::path channels_staged = outputs.write(channels_csv, [&](std::ostream& out) {
+    out << "arc_length_m";
+    for (int c = 0; c < kIrregularityChannels; ++c) out << ',' << channel_name(c) << "_m";
+    out << '\n' << std::setprecision(10);
+    const std::vector<double>& s = irr.sample_arc_lengths_m();
+    for (size_t i = 0; i < s.size(); ++i) {
+      put_csv_number(out, s[i], [] { return std::string("arc_length_m"); });
+      for (int c = 0; c < kIrregularityChannels; ++c) {
+        out << ',';
+        put_csv_number(out, irr.samples(IrregularityChannel(c))[i], [&] { return channel_name(c) + "_m"; });
+      }
+      out << '\n';
+    }
+  });
+  const std::filesystem::path psd_staged = outputs.write(psd_csv, [&](std::ostream& out) {
+    out << "omega_rad_per_m,wavelength_m";
+    for (int c = 0; c < kIrregularityChannels; ++c)
+      out << ',' << channel_name(c) << "_welch_m2_per_rad_per_m," << channel_name(c)
+          << "_target_m2_per_rad_per_m";
+    out << '\n' << std::setprecision(10);
+    const std::vector<double>& w = check.channels[0].welch.omega_rad_per_m;
+    for (size_t k = 1; k < w.size(); ++k) {  // no DC bin: its wavelength is infinite
+      out << w[k] << ',' << 2.0 * std::numbers::pi / w[k];
+      for (int c = 0; c < kIrregularityChannels; ++c) {
+        out << ',';
+        put_csv_number(out, check.channels[size_t(c)].welch.psd_m2_per_rad_per_m[k], [] { return std::string("welch"); });
+        out << ',' << check.channels[size_t(c)].target_psd_m2_per_rad_per_m[k];
+      }
+      out << '\n';
+    }
+  });
+  std::ostringstream shown;
+  shown << std::setprecision(4) << scene_name << ": " << name_in(kIrregularitySpectrumNames, spec.spectrum)
+        << ", seed " << spec.seed << ", wavelengths " << spec.wavelength_min_m << "-" << spec.wavelength_max_m
+        << " m, " << spec.length_m << " m from " << spec.start_m << " m\n";
+  outputs.write(stem + "_irregularities.json", [&](std::ostream& out) {
+    JsonWriter j(out);
+    j.begin_object()
+        .field("scene", scene_name)
+        .field("psd", std::string(name_in(kIrregularitySpectrumNames, spec.spectrum)))
+        .field("seed", double(spec.seed))
+        .field("wavelength_min_m", spec.wavelength_min_m)
+        .field("wavelength_max_m", spec.wavelength_max_m)
+        .field("start_m", spec.start_m)
+        .field("length_m", spec.length_m)
+        .field("sample_interval_m", spec.sample_interval_m)
+        .field("components", spec.components)
+        .field("amplitude_scale", spec.amplitude_scale)
+        .field("fade_in_m", spec.fade_in_m)
+        .field("welch_segment_m", check.segment_samples * spec.sample_interval_m)
+        .field("welch_segments", check.channels[0].welch.segments);
+    j.key("channels").begin_array();
+    for (int c = 0; c < kIrregularityChannels; ++c) {
+      const IrregularityChannelCheck& ch = check.channels[size_t(c)];
+      j.begin_object()
+          .field("name", channel_name(c))
+          .field("sample_rms_m", ch.sample_rms_m)
+          .field("synthesised_rms_m", ch.synthesised_rms_m)
+          .field("target_rms_m", ch.target_rms_m)
+          .end_object();
+      shown << "  " << std::left << std::setw(12) << channel_name(c) << std::right << " rms "
+            << ch.sample_rms_m * 1e3 << " mm (target over the band " << ch.target_rms_m * 1e3 << " mm)\n";
+    }
+    j.end_array().end_object();
+  });
+  if (plots) {
+    const std::string script = stem + "_irregularity_plots.gp";
+    const std::string channels_png = stem + "_irregularities.png", psd_png = stem + "_irregularity_psd.png";
+    outputs.write(script, [&](std::ostream& gp) {
+      gp << "# Run from the output folder: gnuplot " << script << "\n"
+         << "if (!exists(\"channels_csv\")) channels_csv = " << gnuplot_path(channels_csv) << "\n"
+         << "if (!exists(\"psd_csv\")) psd_csv = " << gnuplot_path(psd_csv) << "\n"
+         << "set datafile separator ','\n"
+         << "set terminal pngcairo size 900,700 font 'Sans,10' noenhanced\n"
+         << "set output " << gnuplot_text(channels_png) << "\n"
+         << "set multiplot layout 4,1 title "
+         << gnuplot_text(scene_name + ": track irregularities (" +
+                         std::string(name_in(kIrregularitySpectrumNames, spec.spectrum)) + ")")
+         << "\nset grid\n";
+      for (int c = 0; c < kIrregularityChannels; ++c)
+        gp << "set ylabel " << gnuplot_text(channel_name(c) + " [mm]") << "\n"
+           << (c == 3 ? "set xlabel 'arc length [m]'\n" : "unset xlabel\n")
+           << "plot channels_csv skip 1 using 1:($" << 2 + c << "*1000) with lines lw 1 notitle\n";
+      gp << "unset multiplot\n"
+         << "set output " << gnuplot_text(psd_png) << "\n"
+         << "set multiplot layout 2,2 title " << gnuplot_text(scene_name + ": PSD of the irregularities (Welch) against the target")
+         << "\nset logscale xy\nset grid\nset xlabel 'Omega [rad/m]'\nset ylabel 'PSD [m^2/(rad/m)]'\n"
+         // The band and an octave either side: beyond it the estimate is the
+         // window's leakage floor, decades down.
+         << "set xrange [" << std::numbers::pi / spec.wavelength_max_m << ":" << 4.0 * std::numbers::pi / spec.wavelength_min_m << "]\n"
+         << "set key bottom left\n";
+      for (int c = 0; c < kIrregularityChannels; ++c)
+        gp << "set title " << gnuplot_text(channel_name(c)) << "\n"
+           << "plot psd_csv skip 1 using 1:($" << 3 + 2 * c << ">0?$" << 3 + 2 * c
+           << ":1/0) with lines lw 1 title 'Welch', psd_csv skip 1 using 1:($" << 4 + 2 * c << ">0?$"
+           << 4 + 2 * c << ":1/0) with lines lw 2 lc 'black' dt 2 title 'target'\n";
+      gp << "unset multiplot\n";
+    });
+    outputs.add(channels_png);
+    outputs.add(psd_png);
+    run_gnuplot(script, outputs.staging_dir(), {channels_png, psd_png},
+                {{"channels_csv", std::filesystem::absolute(channels_staged).string()},
+                 {"psd_csv", std::filesystem::absolute(psd_staged).string()}});
+  }
+  return shown.str();
+}
+
+}  // namespace railstab
