@@ -78,6 +78,10 @@ TEST(CliRide, SimulateWritesWheelForcesAndAccelerationsWithPlots) {
   const double limit = std::stod(test::json_value(json, "prudhomme_limit_N"));
   EXPECT_NEAR(limit, 10e3 + (left + right) / 3.0, 1e-6 * limit);
   EXPECT_GT(left, 50e3);  // the thesis vehicle: ~74 kN per wheel
+  // 20 m/s at 0.01 s: 0.2 m between outputs, so the 2 m means are given.
+  const double mean_2m = std::stod(test::json_value(json, "max_abs_sum_y_2m_N"));
+  EXPECT_LE(mean_2m, std::stod(test::json_value(json, "max_abs_sum_y_N")) + 1e-6);
+  EXPECT_GT(mean_2m, 1e3);  // steady curving: Sum Y ~ 27 kN
   fs::remove_all(dir);
 }
 

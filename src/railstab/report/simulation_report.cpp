@@ -117,6 +117,12 @@ std::string simulation_run_json(const Model& model, double speed_m_per_s,
       j.key("max_y_over_q_right");
       if (e.max_y_over_q_right) j.value(*e.max_y_over_q_right);
       else j.null();
+      j.key("max_abs_sum_y_2m_N");
+      if (e.max_abs_sum_y_2m_N) j.value(*e.max_abs_sum_y_2m_N);
+      else j.null();
+      j.key("max_y_over_q_2m");
+      if (e.max_y_over_q_2m) j.value(*e.max_y_over_q_2m);
+      else j.null();
       j.end_object();
     }
     j.end_array().end_object();

@@ -1,5 +1,7 @@
 #include <railstab/ride/ride_history.hpp>
 
+#include <railstab/signals/sliding_window.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -10,6 +12,7 @@ RideHistory ride_history(const Model& model, double speed_m_per_s, const Traject
                          double prudhomme_factor) {
   RideHistory h;
   h.times_s = traj.times_s;
+  for (double t : traj.times_s) h.distance_m.push_back(model.distance_at(t, speed_m_per_s));
   h.prudhomme_factor = prudhomme_factor;
   try {
     h.static_loads = static_wheel_loads(model, speed_m_per_s);
@@ -53,6 +56,34 @@ std::vector<WheelsetExtremes> wheelset_extremes(const RideHistory& history) {
       e.max_delta_q_over_q0 =
           std::max({e.max_delta_q_over_q0, f.left_delta_q_over_q0, f.right_delta_q_over_q0});
     }
+  // 2 m means: only where the samples are dense enough and the distance grows.
+  const std::vector<double>& s = history.distance_m;
+  bool increasing = s.size() >= 2;
+  for (size_t i = 1; i < s.size() && increasing; ++i) increasing = s[i] > s[i - 1];
+  if (!increasing || s.back() - s.front() < kSafetyMeanWindow_m ||
+      (s.back() - s.front()) / double(s.size() - 1) > kSafetyMeanWindow_m / 2.0)
+    return extremes;
+  for (size_t w = 0; w < extremes.size(); ++w) {
+    std::vector<double> sum_y, left, right;
+    bool lifted = false;
+    for (size_t i = 0; i < s.size(); ++i) {
+      const WheelsetForces& f = history.wheelsets[i][w];
+      sum_y.push_back(f.sum_y_N);
+      lifted = lifted || !f.left.y_over_q || !f.right.y_over_q;
+      left.push_back(f.left.y_over_q.value_or(0.0));
+      right.push_back(f.right.y_over_q.value_or(0.0));
+    }
+    double m = 0.0;
+    for (const WindowValue& v : sliding_mean(s, sum_y, kSafetyMeanWindow_m, kSafetyMeanStep_m))
+      m = std::max(m, std::abs(v.value));
+    extremes[w].max_abs_sum_y_2m_N = m;
+    if (lifted) continue;
+    double q = -1e300;
+    for (const std::vector<double>* side : {&left, &right})
+      for (const WindowValue& v : sliding_mean(s, *side, kSafetyMeanWindow_m, kSafetyMeanStep_m))
+        q = std::max(q, v.value);
+    extremes[w].max_y_over_q_2m = q;
+  }
   return extremes;
 }
 
