@@ -22,7 +22,7 @@
 #   RAILSTAB_FUZZ_SECONDS   time per harness (default 30: 60 s in total)
 #   RAILSTAB_SANITIZE_SKIP  ctest -E regex of tests left out within those
 #                           folders (default below: the long time-domain
-#                           runs, 10-20 s each in Release and 100-200 s under
+#                           runs (the assessment's two runs among them), 10-20 s each in Release and 100-200 s under
 #                           ASan (and the time-domain runs of 15-55 s under
 #                           ASan whose code shorter tests run: the Hopf
 #                           amplitude checks, the ramps, the limit-cycle
@@ -37,7 +37,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 fuzz_seconds=${RAILSTAB_FUZZ_SECONDS:-30}
-long_runs='CliRunErrors\.LeavingTheContactTable|SteadyCurvingProfiles\.EquilibriumIsWhere|CriticalSpeedSensitivity\.ThesisVehicle|ContactDamping\.VerifyInTheArc|ThesisBogie\.ShiftsOutwardsInCurve|ExtremeConservative|Extreme/ExtremeRun|Verification\.|ErrorEstimate\.|ExtremeNearCritical|CurveStabilityProfiles\.(SpinMode|VehicleArc|HighSpeed)|CliVerifyAnyMode|OrbitContinuationThesisVehicle\.|FlowSensitivity\.Monodromy|BifurcationAnalysisThesisBogie\.|HopfThesisVehicle\.TimeDomain|HopfBrusselator\.PredictedAmplitude|SpeedRamp\.HuntingEnds|CliSpeedRamp\.TwoRates|LimitCycleError\.AmplitudeAndPeriod|BodyDynamics\.CurveResultIndependent|SparseNewtonRun\.FollowsTheDenseRunWithinTheTolerance/..thesis_train_4'
+long_runs='CliRunErrors\.LeavingTheContactTable|CliAssess\.|SteadyCurvingProfiles\.EquilibriumIsWhere|CriticalSpeedSensitivity\.ThesisVehicle|ContactDamping\.VerifyInTheArc|ThesisBogie\.ShiftsOutwardsInCurve|ExtremeConservative|Extreme/ExtremeRun|Verification\.|ErrorEstimate\.|ExtremeNearCritical|CurveStabilityProfiles\.(SpinMode|VehicleArc|HighSpeed)|CliVerifyAnyMode|OrbitContinuationThesisVehicle\.|FlowSensitivity\.Monodromy|BifurcationAnalysisThesisBogie\.|HopfThesisVehicle\.TimeDomain|HopfBrusselator\.PredictedAmplitude|SpeedRamp\.HuntingEnds|CliSpeedRamp\.TwoRates|LimitCycleError\.AmplitudeAndPeriod|BodyDynamics\.CurveResultIndependent|SparseNewtonRun\.FollowsTheDenseRunWithinTheTolerance/..thesis_train_4'
 timed='ContactTables\.BuildTakesUnderOneSecond|SundialsFlagNames|WorkLimits'
 # Packaging and build tests (the example programs, install + find_package,
 # the compile-fail test of the element contract): about the

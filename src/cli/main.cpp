@@ -1,5 +1,6 @@
 // railstab: lateral stability of railway vehicles. Subcommands live in
 // src/cli/*_command.cpp; this file only wires them and reports errors.
+#include "cli/assess_command.hpp"
 #include "cli/bifurcation_command.hpp"
 #include "cli/check_command.hpp"
 #include "cli/contact_geometry_command.hpp"
@@ -32,6 +33,7 @@ int main(int argc, char** argv) {
   railstab::register_check_command(app);
   railstab::register_bifurcation_command(app);
   railstab::register_track_command(app);
+  railstab::register_assess_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

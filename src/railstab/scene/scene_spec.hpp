@@ -89,6 +89,19 @@ struct AssessmentSpec {
   // track shift force of a wheelset, P0 its static axle load in kN: 1.0 for
   // locomotives and passenger vehicles, 0.85 for freight wagons (EN 14363).
   double prudhomme_factor = 1.0;
+  // EN 14363's flange-climbing limit on the 2 m mean of Y/Q (curves of
+  // R >= 250 m).
+  double y_over_q_limit = 0.8;
+  // Running stability (railstab assess; docs/assessment.md): the rms of the
+  // band-passed Sum Y and bogie frame lateral acceleration over windows of
+  // stability_window_m stepped by stability_window_step_m, the band
+  // f0 +- stability_band_half_width_Hz around the instability frequency f0,
+  // a Butterworth band-pass whose prototype order is stability_filter_order
+  // (the order EN 14363 prescribes is not public to us: a parameter).
+  double stability_window_m = 100.0;
+  double stability_window_step_m = 10.0;
+  double stability_band_half_width_Hz = 2.0;
+  int stability_filter_order = 4;
 };
 
 struct SceneSpec {

@@ -51,10 +51,30 @@ SimulationSpec read_simulation(const TableReader& top) {
 }
 
 AssessmentSpec read_assessment(const TableReader& top) {
-  const std::optional<TableReader> assessment = top.optional_table("assessment", {"prudhomme_factor"});
+  const std::optional<TableReader> assessment = top.optional_table(
+      "assessment", {"prudhomme_factor", "y_over_q_limit", "stability_window_m", "stability_window_step_m",
+                     "stability_band_half_width_Hz", "stability_filter_order"});
   AssessmentSpec spec;
   if (!assessment) return spec;
-  spec.prudhomme_factor = assessment->number_or("prudhomme_factor", "", spec.prudhomme_factor);
+  const TableReader& a = *assessment;
+  spec.prudhomme_factor = a.number_or("prudhomme_factor", "", spec.prudhomme_factor);
+  spec.y_over_q_limit = a.number_or("y_over_q_limit", "", spec.y_over_q_limit);
+  spec.stability_window_m = a.number_or("stability_window_m", "m", spec.stability_window_m);
+  spec.stability_window_step_m = a.number_or("stability_window_step_m", "m", spec.stability_window_step_m);
+  spec.stability_band_half_width_Hz =
+      a.number_or("stability_band_half_width_Hz", "Hz", spec.stability_band_half_width_Hz);
+  const double order = a.number_or("stability_filter_order", "", spec.stability_filter_order);
+  if (!(order >= 1.0 && order <= 10.0 && order == std::floor(order)))
+    a.fail("stability_filter_order", "a whole number in [1, 10]", format_number(order));
+  spec.stability_filter_order = int(order);
+  if (!(spec.y_over_q_limit > 0.0 && spec.y_over_q_limit <= 5.0))
+    a.fail("y_over_q_limit", "(0, 5]", format_number(spec.y_over_q_limit));
+  if (!(spec.stability_window_m >= 1.0 && spec.stability_window_m <= 1e4))
+    a.fail("stability_window_m", "[1, 1e4] m", format_number(spec.stability_window_m));
+  if (!(spec.stability_window_step_m > 0.0 && spec.stability_window_step_m <= spec.stability_window_m))
+    a.fail("stability_window_step_m", "(0, stability_window_m]", format_number(spec.stability_window_step_m));
+  if (!(spec.stability_band_half_width_Hz >= 0.1 && spec.stability_band_half_width_Hz <= 20.0))
+    a.fail("stability_band_half_width_Hz", "[0.1, 20] Hz", format_number(spec.stability_band_half_width_Hz));
   return spec;
 }
 
