@@ -68,8 +68,12 @@ TEST(SlidingWindow, RmsAndMeanOfKnownSignals) {
     EXPECT_NEAR(w.value, 3.0 / std::sqrt(2.0), 1e-12);
   }
   const std::vector<WindowValue> mean = sliding_mean(s, y, 2.0, 0.5);
-  for (const WindowValue& w : mean)
-    EXPECT_DOUBLE_EQ(w.value, w.end_m <= 500.0 ? 1.5 : (w.start_m >= 500.0 ? 2.5 : w.value));
+  for (const WindowValue& w : mean) {
+    if (w.end_m <= 500.0) EXPECT_DOUBLE_EQ(w.value, 1.5);
+    else if (w.start_m >= 500.0) EXPECT_DOUBLE_EQ(w.value, 2.5);
+    else  // straddling the step: the fraction of the window past 500 m
+      EXPECT_NEAR(w.value, 1.5 + (w.end_m - 500.0) / 2.0, 1e-12) << w.start_m;
+  }
   EXPECT_THROW(sliding_rms(s, x, 0.0, 10.0), std::invalid_argument);
 }
 
