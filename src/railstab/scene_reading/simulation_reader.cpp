@@ -63,10 +63,8 @@ AssessmentSpec read_assessment(const TableReader& top) {
   spec.stability_window_step_m = a.number_or("stability_window_step_m", "m", spec.stability_window_step_m);
   spec.stability_band_half_width_Hz =
       a.number_or("stability_band_half_width_Hz", "Hz", spec.stability_band_half_width_Hz);
-  const double order = a.number_or("stability_filter_order", "", spec.stability_filter_order);
-  if (!(order >= 1.0 && order <= 10.0 && order == std::floor(order)))
-    a.fail("stability_filter_order", "a whole number in [1, 10]", format_number(order));
-  spec.stability_filter_order = int(order);
+  spec.stability_filter_order = int(a.whole_number_or("stability_filter_order", 1.0, 10.0,
+                                                      spec.stability_filter_order, "a whole number in [1, 10]"));
   if (!(spec.y_over_q_limit > 0.0 && spec.y_over_q_limit <= 5.0))
     a.fail("y_over_q_limit", "(0, 5]", format_number(spec.y_over_q_limit));
   if (!(spec.stability_window_m >= 1.0 && spec.stability_window_m <= 1e4))

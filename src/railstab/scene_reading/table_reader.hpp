@@ -1,4 +1,5 @@
 #pragma once
+#include <cmath>
 // Reading one TOML table of a scene file, key by key, with the diagnostics
 // of scene reading: each message names the file, the key path and what was
 // expected ("cases/x.toml: bodies[2].mass_kg: expected a number (kg), got a
@@ -96,6 +97,14 @@ class TableReader {
   double number(std::string_view key, std::string_view unit) const;
   double number_or(std::string_view key, std::string_view unit, double fallback) const {
     return has(key) ? number(key, unit) : fallback;
+  }
+  // A whole number in [low, high] (read as a number), or `fallback` when the
+  // key is absent; `expected` words the error ("a whole number in [1, 10]").
+  double whole_number_or(std::string_view key, double low, double high, double fallback,
+                         std::string_view expected) const {
+    const double v = number_or(key, "", fallback);
+    if (!(v >= low && v <= high && v == std::floor(v))) fail(key, expected, format_number(v));
+    return v;
   }
   std::string text(std::string_view key) const;
   bool flag_or(std::string_view key, bool fallback) const;

@@ -68,19 +68,15 @@ const Choices<IrregularitySpectrum> kSpectra = choices_of(kIrregularitySpectrumN
 IrregularitySpec read_irregularities(const TableReader& table) {
   IrregularitySpec spec;
   spec.spectrum = table.choice("psd", kSpectra);
-  const double seed = table.number_or("seed", "", double(spec.seed));
-  if (!(seed >= 0.0 && seed <= 9007199254740992.0 && seed == std::floor(seed)))
-    table.fail("seed", "a whole number in [0, 2^53]", format_number(seed));
-  spec.seed = std::uint64_t(seed);
+  spec.seed = std::uint64_t(
+      table.whole_number_or("seed", 0.0, 9007199254740992.0, double(spec.seed), "a whole number in [0, 2^53]"));
   spec.wavelength_min_m = table.number_or("wavelength_min_m", "m", spec.wavelength_min_m);
   spec.wavelength_max_m = table.number_or("wavelength_max_m", "m", spec.wavelength_max_m);
   spec.start_m = table.number_or("start_m", "m", spec.start_m);
   spec.length_m = table.number_or("length_m", "m", spec.length_m);
   spec.sample_interval_m = table.number_or("sample_interval_m", "m", spec.sample_interval_m);
-  const double components = table.number_or("components", "", double(spec.components));
-  if (!(components >= 1.0 && components <= 100000.0 && components == std::floor(components)))
-    table.fail("components", "a whole number of cosines in [1, 100000]", format_number(components));
-  spec.components = int(components);
+  spec.components = int(table.whole_number_or("components", 1.0, 100000.0, double(spec.components),
+                                               "a whole number of cosines in [1, 100000]"));
   spec.amplitude_scale = table.number_or("amplitude_scale", "", spec.amplitude_scale);
   spec.fade_in_m = table.number_or("fade_in_m", "m", spec.fade_in_m);
   if (!(spec.wavelength_min_m > 0.0 && spec.wavelength_min_m < spec.wavelength_max_m &&
