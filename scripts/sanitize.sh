@@ -37,7 +37,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 fuzz_seconds=${RAILSTAB_FUZZ_SECONDS:-30}
-long_runs='CliRunErrors\.LeavingTheContactTable|CliAssess\.|SteadyCurvingProfiles\.EquilibriumIsWhere|CriticalSpeedSensitivity\.ThesisVehicle|ContactDamping\.VerifyInTheArc|ThesisBogie\.ShiftsOutwardsInCurve|ExtremeConservative|Extreme/ExtremeRun|Verification\.|ErrorEstimate\.|ExtremeNearCritical|CurveStabilityProfiles\.(SpinMode|VehicleArc|HighSpeed)|CliVerifyAnyMode|OrbitContinuationThesisVehicle\.|FlowSensitivity\.Monodromy|BifurcationAnalysisThesisBogie\.|HopfThesisVehicle\.TimeDomain|HopfBrusselator\.PredictedAmplitude|SpeedRamp\.HuntingEnds|CliSpeedRamp\.TwoRates|LimitCycleError\.AmplitudeAndPeriod|BodyDynamics\.CurveResultIndependent|SparseNewtonRun\.FollowsTheDenseRunWithinTheTolerance/..thesis_train_4'
+long_runs='CliRunErrors\.LeavingTheContactTable|CliAssess\.|CliIrregularTrack\.|SteadyCurvingProfiles\.EquilibriumIsWhere|CriticalSpeedSensitivity\.ThesisVehicle|ContactDamping\.VerifyInTheArc|ThesisBogie\.ShiftsOutwardsInCurve|ExtremeConservative|Extreme/ExtremeRun|Verification\.|ErrorEstimate\.|ExtremeNearCritical|CurveStabilityProfiles\.(SpinMode|VehicleArc|HighSpeed)|CliVerifyAnyMode|OrbitContinuationThesisVehicle\.|FlowSensitivity\.Monodromy|BifurcationAnalysisThesisBogie\.|HopfThesisVehicle\.TimeDomain|HopfBrusselator\.PredictedAmplitude|SpeedRamp\.HuntingEnds|CliSpeedRamp\.TwoRates|LimitCycleError\.AmplitudeAndPeriod|BodyDynamics\.CurveResultIndependent|SparseNewtonRun\.FollowsTheDenseRunWithinTheTolerance/..thesis_train_4'
 timed='ContactTables\.BuildTakesUnderOneSecond|SundialsFlagNames|WorkLimits'
 # Packaging and build tests (the example programs, install + find_package,
 # the compile-fail test of the element contract): about the

@@ -191,6 +191,7 @@ void run_simulate(const SimulateArgs& args) {
 
 void register_simulate_command(CLI::App& app) {
   auto args = std::make_shared<SimulateArgs>();
+  args->overrides.apply_track_irregularities = true;
   CLI::App* cmd = app.add_subcommand("simulate", "integrate the nonlinear model in time");
   SceneFlags flags;
   flags.speed = flags.arc_length = flags.plots = true;

@@ -112,7 +112,7 @@ TEST(RunningStability, AWheelThatLiftsOffFailsWithoutAValue) {
   EXPECT_NE(a.failures_without_value[0].find("wheelset2"), std::string::npos) << a.failures_without_value[0];
 }
 
-TEST(RunningStability, ARunShorterThanOneWindowIsRefusedNamingTheKey) {
+TEST(RunningStability, ARunShorterThanOneWindowIsRefusedOrFailsWhenItStoppedEarly) {
   RideHistory h = synthetic_run(1.0, 0.1);
   h.times_s.resize(300);
   h.distance_m.resize(300);
@@ -124,6 +124,14 @@ TEST(RunningStability, ARunShorterThanOneWindowIsRefusedNamingTheKey) {
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("assessment.stability_window_m"), std::string::npos) << e.what();
   }
+  // The same run stopped early (at the flange clearance): a fail, saying why.
+  const RunningStabilityAssessment a =
+      assess_running_stability(thesis_vehicle(), h, AssessmentSpec{}, "wheelset1 reached the flange clearance");
+  EXPECT_FALSE(a.passed);
+  EXPECT_TRUE(a.quantities.empty());
+  ASSERT_EQ(a.failures_without_value.size(), 1u);
+  EXPECT_NE(a.failures_without_value[0].find("before one 100 m window"), std::string::npos)
+      << a.failures_without_value[0];
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
-// `railstab track SCENE` and the refusal of irregular track by the analyses
-// (irregularities are not applied to the contact yet: docs/irregular_track.md).
+// `railstab track SCENE` (synthesised and measured irregularities) and the
+// refusal of irregular track by the analyses of the design track
+// (docs/irregular_track.md).
 #include <gtest/gtest.h>
 
 #include "cli/run_cli.hpp"
@@ -7,7 +8,9 @@
 #include "support/test_files.hpp"
 
 #include <filesystem>
+#include <cmath>
 #include <fstream>
+#include <numbers>
 
 namespace fs = std::filesystem;
 
@@ -54,12 +57,50 @@ TEST(CliTrack, RefusesBadKeysAndAnalysesOfIrregularTrack) {
   run = test::run_railstab({"track", test::case_path("thesis_vehicle_tangent")}, dir);
   EXPECT_NE(run.exit_code, 0);
   EXPECT_NE(run.output.find("track.irregularities"), std::string::npos) << run.output;
-  // An analysis would run on perfect track: refused, nothing written.
+  // A linearisation is of the design track: refused, nothing written.
   run = test::run_railstab(
-      {"simulate", irregular_scene(dir, "psd = \"fra_class_6\"\n").string(), "--t-end", "0.1", "--out", "out"}, dir);
+      {"critical-speed", irregular_scene(dir, "psd = \"fra_class_6\"\n").string(), "--out", "out"}, dir);
   EXPECT_NE(run.exit_code, 0);
-  EXPECT_NE(run.output.find("not yet applied"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("applied by the time-domain commands"), std::string::npos) << run.output;
   EXPECT_FALSE(fs::exists(dir / "out"));
+  // A measured file that is not there, and one beside psd.
+  run = test::run_railstab({"track", irregular_scene(dir, "file = \"absent.csv\"\n").string()}, dir);
+  EXPECT_NE(run.exit_code, 0);
+  EXPECT_NE(run.output.find("irregular.toml: track.irregularities.file: "), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("absent.csv: track irregularity file not found"), std::string::npos) << run.output;
+  run = test::run_railstab({"track", irregular_scene(dir, "file = \"a.csv\"\npsd = \"fra_class_6\"\n").string()}, dir);
+  EXPECT_NE(run.exit_code, 0);
+  EXPECT_NE(run.output.find("either psd (synthesised) or file (measured)"), std::string::npos) << run.output;
+  std::ofstream(dir / "a.csv") << "s_m,level_mm\n0,0\n1,0\n2,0\n3,0\n";
+  run = test::run_railstab({"track", irregular_scene(dir, "file = \"a.csv\"\nseed = 3\n").string()}, dir);
+  EXPECT_NE(run.exit_code, 0);
+  EXPECT_NE(run.output.find("track.irregularities.seed: expected no synthesis key beside `file`"), std::string::npos)
+      << run.output;
+  fs::remove_all(dir);
+}
+
+// A measured record (a 40 m wave of 1 mm in level, 2 km at 0.5 m): the
+// channels and their PSD, with no target; the level's rms is the wave's,
+// a0 / sqrt(2), over the stretch between the fades.
+TEST(CliTrack, MeasuredFileWritesItsChannelsAndPsdWithoutATarget) {
+  const fs::path dir = test::fresh_dir("cli", "track_measured");
+  {
+    std::ofstream csv(dir / "recorded.csv");
+    csv << "# a test record\narc_length_m,level_mm,gauge_mm\n";
+    for (int i = 0; i <= 4000; ++i) csv << 0.5 * i << "," << std::sin(2 * std::numbers::pi * 0.5 * i / 40.0) << ",0\n";
+  }
+  const fs::path scene = irregular_scene(dir, "file = \"recorded.csv\"\nsample_interval_m = 0.5\n");
+  const auto run = test::run_railstab({"track", scene.string(), "--out", "out", "--no-plots"}, dir);
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const std::string json = test::read_text(dir / "out" / "thesis_vehicle_tangent_irregularities.json");
+  EXPECT_EQ(test::json_value(json, "psd"), "null") << json;
+  EXPECT_NE(json.find("recorded.csv"), std::string::npos);
+  EXPECT_EQ(json.find("target_rms_m"), std::string::npos);
+  EXPECT_NEAR(std::stod(test::json_value(json, "length_m")), 2000.0, 1e-9);
+  // Channels in the order alignment, level, ...: the second sample_rms_m.
+  const size_t level = json.find("\"name\": \"level\"");
+  ASSERT_NE(level, std::string::npos);
+  EXPECT_NEAR(std::stod(test::json_value(json.substr(level), "sample_rms_m")), 1e-3 / std::sqrt(2.0), 0.01e-3);
   fs::remove_all(dir);
 }
 

@@ -67,6 +67,16 @@ RunningStabilityAssessment assess_running_stability(const Model& model, const Ri
   if (h.times_s.size() < 32 || h.static_loads.empty())
     throw std::invalid_argument("assessment: the run has fewer than 32 outputs or no wheelset");
   a.distance_m = h.distance_m.back() - h.distance_m.front();
+  // A run that stopped (at the flange clearance, the table's edge) before
+  // one window has failed: nothing is formed, and that is the verdict.
+  if (a.distance_m < spec.stability_window_m && !stopped_early.empty()) {
+    std::ostringstream msg;
+    msg << "the run stopped after " << a.distance_m << " m, before one " << spec.stability_window_m
+        << " m window: no rms formed";
+    a.failures_without_value.push_back(msg.str());
+    a.passed = false;
+    return a;
+  }
   if (a.distance_m < spec.stability_window_m) {
     std::ostringstream msg;
     msg << "assessment: the run covers " << a.distance_m << " m, less than one window of "

@@ -49,7 +49,9 @@ std::vector<BogieFrame> bogie_frames(const Model& model);
 // periodogram between 0.5 Hz and min(20 Hz, 0.4 / dt), over its second half.
 double dominant_frequency_Hz(const std::vector<double>& signal, double dt_s);
 
-// Throws std::invalid_argument when the run covers less than one window or
+// A run that stopped early before one window is a fail with no quantities
+// (failures_without_value says why). Throws std::invalid_argument when a
+// run that went to its end covers less than one window or
 // the band reaches the output's Nyquist frequency.
 RunningStabilityAssessment assess_running_stability(const Model& model, const RideHistory& history,
                                                     const AssessmentSpec& spec, const std::string& stopped_early);

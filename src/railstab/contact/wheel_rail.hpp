@@ -5,6 +5,12 @@
 // Everything is computed in the wheelset's non-spinning frame I (thesis
 // 4.40), so the spin angle never enters (ERRATA 11a).
 //
+// Track irregularities displace each rail (TrackFrameKinematics::rails,
+// translations dy, dz in the track frame at the wheelset's arc length): every
+// geometry measures the wheel from its own displaced rail. The rails do not
+// move in time, so the slip velocities below (the wheel material's absolute
+// velocity) need no irregularity term.
+//
 // knife_edge_cone: the rail is a wire along the track at lateral side*e0 in the
 // track plane; the wheel a cone of half-angle gamma whose radius at axial
 // coordinate eta (in I) is r(eta) = r0 + tan(gamma) (e0 - side*eta). The
@@ -121,10 +127,13 @@ ContactPointGeometry<T> knife_edge_geometry(const ModelContactTpl<S>& contact,
   // In the parameter scalar S, then lifted: no state derivatives to carry.
   const S& angle = contact.cone_angle_rad;
   const T tg = lift<T>(S(tan(angle))), cg = lift<T>(S(cos(angle))), sg = lift<T>(S(sin(angle)));
-  // Wire point in the plane x_I = 0: x_I of (lambda, side e0, 0) - w vanishes.
+  // Wire point in the plane x_I = 0: x_I of (lambda, side e0 + dy, dz) - w
+  // vanishes (dy, dz: the rail's displacement by the track irregularities).
+  const RailDisplacement& rail = ws.track->rail(side);
+  const double wire_y = side * e0 + rail.lateral_m;
   const T yaw = ws.q(5);
-  const T lambda = w.x() - tan(yaw) * (sd * e0 - w.y());
-  const Vec3<T> P_T(lambda, sd * e0, T(0));
+  const T lambda = w.x() - tan(yaw) * (T(wire_y) - w.y());
+  const Vec3<T> P_T(lambda, T(wire_y), T(rail.vertical_m));
   const Vec3<T> wire_I = R_IT * (P_T - w);
   const T eta = wire_I.y();
   const T rho = -wire_I.z();
@@ -147,11 +156,14 @@ ContactPointGeometry<T> linear_conicity_geometry(const ModelContactTpl<S>& conta
   const ContactSpec& spec = contact.spec;
   const T sd = T(double(side));
   const Vec3<T> w = ws.q.template head<3>();
+  // Measured from this wheel's rail (displaced by the track irregularities).
+  const RailDisplacement& rail = ws.track->rail(side);
   ContactPointGeometry<T> g;
-  g.rolling_radius_m = T(spec.nominal_rolling_radius_m) + sd * lift<T>(contact.conicity) * w.y();
+  g.rolling_radius_m = T(spec.nominal_rolling_radius_m) +
+                       sd * lift<T>(contact.conicity) * (w.y() - T(rail.lateral_m));
   g.point_I = Vec3<T>(T(0), sd * spec.half_contact_distance_m, -g.rolling_radius_m);
   const Vec3<T> point_T = w + ws.R_TI * g.point_I;
-  g.penetration_m = -point_T.z();
+  g.penetration_m = T(rail.vertical_m) - point_T.z();
   g.nu_I = ws.R_TI.transpose() * Vec3<T>(T(0), T(0), T(1));
   g.A_per_m = T(0.5) / g.rolling_radius_m;
   g.B_per_m = T(contact.rail_curvature_B_per_m);
@@ -169,7 +181,11 @@ ContactPointGeometry<T> profile_slot_geometry(const ModelContactTpl<S>& contact,
   using std::sin;
   const ProfileContactGeometry& pg = *contact.spec.profile_geometry;
   const double s = side > 0 ? 1.0 : -1.0;
-  const WheelPoseOf<T> pose = wheel_pose_in_rail_frame<T>(pg.pair, side, ws.q(1), ws.q(2), ws.q(3));
+  // The wheelset relative to this wheel's rail: a rail displaced by the
+  // track irregularities is the wheelset displaced the other way.
+  const RailDisplacement& rail = ws.track->rail(side);
+  const WheelPoseOf<T> pose = wheel_pose_in_rail_frame<T>(pg.pair, side, T(ws.q(1) - rail.lateral_m),
+                                                          T(ws.q(2) - rail.vertical_m), ws.q(3));
   ContactPointGeometry<T> g;
   g.point_I.setZero();
   g.nu_I = Vec3<T>(T(0), T(0), T(1));

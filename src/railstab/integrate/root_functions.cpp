@@ -49,11 +49,21 @@ RootFunctionSet::RootFunctionSet(const Model& model, double speed_m_per_s)
 void RootFunctionSet::evaluate(double t_s, const Eigen::Ref<const Eigen::VectorXd>& x,
                                double* g) const {
   Workspace<double> ws;
+  const bool irregular = model_->track.irregularities() != nullptr;
   if (has_wheels_) compute_all_body_motions<double>(*model_, ws, t_s, speed_m_per_s_, x);
+  else if (irregular) ws.update_frames(*model_, t_s, speed_m_per_s_);
   for (size_t i = 0; i < functions_.size(); ++i) {
     const RootFunction& f = functions_[i];
     if (f.kind == RootFunction::Kind::flange_clearance) {
-      g[i] = f.clearance_m * f.clearance_m - x(f.state) * x(f.state);
+      const double y = x(f.state), c = f.clearance_m;
+      if (irregular) {
+        // Each flange's clearance from its own (displaced) rail:
+        // (c + dy_left - y)(y + c - dy_right), c^2 - y^2 on perfect track.
+        const TrackFrameKinematics& k = ws.frames[size_t(f.body)];
+        g[i] = (c + k.rail(+1).lateral_m - y) * (y + c - k.rail(-1).lateral_m);
+      } else {
+        g[i] = c * c - y * y;
+      }
     } else {
       const ModelContact& c =
           geometry_only_[size_t(model_->bodies[size_t(f.body)].wheelset()->contact)];

@@ -1,11 +1,15 @@
 #pragma once
 // Track irregularities as a scene gives them ([track.irregularities];
 // docs/irregular_track.md): synthesised from a published PSD with a seed and
-// a wavelength band.
+// a wavelength band, or read from a measured file.
 #include <railstab/core/name_table.hpp>
 
+#include <array>
 #include <cstdint>
+#include <optional>
+#include <string>
 #include <string_view>
+#include <vector>
 
 namespace railstab {
 
@@ -33,7 +37,19 @@ inline constexpr NameTable<IrregularitySpectrum, 5> kIrregularitySpectrumNames =
     {"fra_class_5", IrregularitySpectrum::fra_class_5},
     {"fra_class_6", IrregularitySpectrum::fra_class_6}}};
 
+// A measured record (irregularity/measured_irregularity_file.hpp), in metres
+// along the track's arc length. A channel the file does not hold is zero.
+struct MeasuredIrregularities {
+  std::string path;                  // the file, resolved against the scene's folder
+  std::vector<double> arc_length_m;  // strictly increasing
+  std::array<std::vector<double>, kIrregularityChannels> channels_m;  // each as long as arc_length_m
+  std::array<bool, kIrregularityChannels> in_file{};
+};
+
 struct IrregularitySpec {
+  // Set: the channels come from this file (`file = ...`), and the synthesis
+  // keys (spectrum, seed, band, start, length, components) do not apply.
+  std::optional<MeasuredIrregularities> measured;
   IrregularitySpectrum spectrum = IrregularitySpectrum::erri_b176_low;
   std::uint64_t seed = 1;
   // The band synthesised: EN 13848-1's D1-D3 wavelength ranges, 3-150 m.
@@ -43,9 +59,11 @@ struct IrregularitySpec {
   double sample_interval_m = 0.25;  // grid the channels are sampled on, then splined
   int components = 2000;            // cosines per channel
   double amplitude_scale = 1.0;     // multiplies every channel
-  // Length over which the channels ramp in from zero at start_m (a smooth
-  // (1 - cos) ramp), so a run does not start on a step.
+  // Lengths over which the channels ramp in from zero where they begin and
+  // back to zero where they end (smooth (1 - cos) ramps), so a run meets no
+  // step at either end.
   double fade_in_m = 10.0;
+  double fade_out_m = 10.0;
 };
 
 }  // namespace railstab

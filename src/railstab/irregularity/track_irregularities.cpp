@@ -2,7 +2,10 @@
 
 #include <railstab/irregularity/irregularity_psd.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 #include <numbers>
 #include <stdexcept>
 
@@ -24,7 +27,49 @@ struct SplitMix64 {
 
 }  // namespace
 
+std::string irregularity_description(const TrackIrregularities& irr) {
+  const IrregularitySpec& spec = irr.spec();
+  std::ostringstream out;
+  out << std::setprecision(6);
+  if (irr.measured())
+    out << "measured file " << spec.measured->path;
+  else
+    out << name_in(kIrregularitySpectrumNames, spec.spectrum) << ", seed " << spec.seed << ", wavelengths "
+        << spec.wavelength_min_m << "-" << spec.wavelength_max_m << " m";
+  out << ", " << irr.last_m() - irr.first_m() << " m from s = " << irr.first_m() << " m, amplitude scale "
+      << spec.amplitude_scale;
+  return out.str();
+}
+
+double irregularity_fade(double u_m, double length_m, double fade_in_m, double fade_out_m) {
+  double r = 1.0;
+  if (fade_in_m > 0.0 && u_m < fade_in_m)
+    r *= 0.5 * (1.0 - std::cos(std::numbers::pi * std::max(u_m, 0.0) / fade_in_m));
+  const double to_end = length_m - u_m;
+  if (fade_out_m > 0.0 && to_end < fade_out_m)
+    r *= 0.5 * (1.0 - std::cos(std::numbers::pi * std::max(to_end, 0.0) / fade_out_m));
+  return r;
+}
+
 TrackIrregularities::TrackIrregularities(const IrregularitySpec& spec) : spec_(spec) {
+  if (spec.measured) {
+    const MeasuredIrregularities& m = *spec.measured;
+    if (m.arc_length_m.size() < 4)
+      throw std::invalid_argument("TrackIrregularities: a measured record of fewer than 4 rows (the reader admits none)");
+    s_ = m.arc_length_m;
+    first_m_ = s_.front();
+    last_m_ = s_.back();
+    const double length = last_m_ - first_m_;
+    for (int c = 0; c < kIrregularityChannels; ++c) {
+      std::vector<double>& v = values_[size_t(c)];
+      v.resize(s_.size());
+      for (size_t i = 0; i < s_.size(); ++i)
+        v[i] = spec.amplitude_scale * m.channels_m[size_t(c)][i] *
+               irregularity_fade(s_[i] - first_m_, length, spec.fade_in_m, spec.fade_out_m);
+      splines_[size_t(c)] = CubicSpline(s_, v);
+    }
+    return;
+  }
   if (!(spec.wavelength_min_m > 0.0 && spec.wavelength_max_m > spec.wavelength_min_m) ||
       !(spec.length_m > 0.0) || !(spec.sample_interval_m > 0.0) || spec.components < 1)
     throw std::invalid_argument("TrackIrregularities: an invalid spec (the scene checker admits none)");
@@ -33,6 +78,8 @@ TrackIrregularities::TrackIrregularities(const IrregularitySpec& spec) : spec_(s
   const int n = spec.components;
   const double dw = (w_hi - w_lo) / n;
   const int samples = int(std::ceil(spec.length_m / spec.sample_interval_m)) + 1;
+  first_m_ = spec.start_m;
+  last_m_ = spec.start_m + spec.length_m;
   s_.resize(size_t(samples));
   for (int i = 0; i < samples; ++i)
     s_[size_t(i)] = spec.start_m + std::min(i * spec.sample_interval_m, spec.length_m);
@@ -56,10 +103,7 @@ TrackIrregularities::TrackIrregularities(const IrregularitySpec& spec) : spec_(s
       const double u = s_[size_t(i)] - spec.start_m;
       double sum = 0.0;
       for (int k = 0; k < n; ++k) sum += amplitude[size_t(k)] * std::cos(omega[size_t(k)] * u + phase[size_t(k)]);
-      const double ramp = spec.fade_in_m > 0.0 && u < spec.fade_in_m
-                              ? 0.5 * (1.0 - std::cos(std::numbers::pi * u / spec.fade_in_m))
-                              : 1.0;
-      v[size_t(i)] = ramp * sum;
+      v[size_t(i)] = irregularity_fade(u, spec.length_m, spec.fade_in_m, spec.fade_out_m) * sum;
     }
     // Duplicate end knots (a length that is not a multiple of the interval)
     // would break the spline: drop the repeated last abscissa.
@@ -72,9 +116,5 @@ TrackIrregularities::TrackIrregularities(const IrregularitySpec& spec) : spec_(s
   }
 }
 
-CubicSpline::Value TrackIrregularities::at(IrregularityChannel channel, double s_m) const {
-  if (s_m < spec_.start_m || s_m > spec_.start_m + spec_.length_m) return {0.0, 0.0, 0.0};
-  return splines_[size_t(channel)].evaluate(s_m);
-}
 
 }  // namespace railstab

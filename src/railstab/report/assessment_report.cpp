@@ -100,8 +100,9 @@ std::string write_assessment_report(const Model& model, const RunningStabilityAs
      << "(docs/assessment.md).\n";
   outputs.write(stem + "_assessment.md", [&](std::ostream& out) { out << md.str(); });
   shown << std::setprecision(4) << "EN 14363 running stability of " << model.name << " at " << run.speed_m_per_s
-        << " m/s: " << (a.passed ? "pass" : "FAIL") << " (f0 " << a.instability_frequency_Hz << " Hz, "
-        << a.distance_m << " m)\n";
+        << " m/s: " << (a.passed ? "pass" : "FAIL") << " (";
+  if (!a.quantities.empty()) shown << "f0 " << a.instability_frequency_Hz << " Hz, ";
+  shown << a.distance_m << " m)\n";
   for (const AssessedQuantity& q : a.quantities)
     shown << "  " << std::left << std::setw(32) << q.quantity << std::setw(12) << q.subject << std::right
           << " " << q.value << " / " << q.limit << " " << q.unit << "  " << verdict(q.passed) << "\n";

@@ -54,37 +54,49 @@ std::string write_irregularity_report(const TrackIrregularities& irr, const Irre
       out << '\n';
     }
   });
+  const std::string source = irr.measured() ? "measured (" + spec.measured->path + ")"
+                                            : std::string(name_in(kIrregularitySpectrumNames, spec.spectrum));
   std::ostringstream shown;
-  shown << std::setprecision(4) << scene_name << ": " << name_in(kIrregularitySpectrumNames, spec.spectrum)
-        << ", seed " << spec.seed << ", wavelengths " << spec.wavelength_min_m << "-" << spec.wavelength_max_m
-        << " m, " << spec.length_m << " m from " << spec.start_m << " m\n";
+  shown << std::setprecision(4) << scene_name << ": " << source;
+  if (!irr.measured())
+    shown << ", seed " << spec.seed << ", wavelengths " << spec.wavelength_min_m << "-" << spec.wavelength_max_m << " m";
+  shown << ", " << irr.last_m() - irr.first_m() << " m from " << irr.first_m() << " m\n";
   outputs.write(stem + "_irregularities.json", [&](std::ostream& out) {
     JsonWriter j(out);
     j.begin_object()
-        .field("scene", scene_name)
-        .field("psd", std::string(name_in(kIrregularitySpectrumNames, spec.spectrum)))
-        .field("seed", double(spec.seed))
-        .field("wavelength_min_m", spec.wavelength_min_m)
-        .field("wavelength_max_m", spec.wavelength_max_m)
-        .field("start_m", spec.start_m)
-        .field("length_m", spec.length_m)
+        .field("scene", scene_name);
+    if (irr.measured()) {
+      j.key("psd").null().field("file", spec.measured->path);
+      j.key("channels_in_file").begin_array();
+      for (int c = 0; c < kIrregularityChannels; ++c)
+        if (spec.measured->in_file[size_t(c)]) j.value(channel_name(c));
+      j.end_array();
+    } else {
+      j.field("psd", std::string(name_in(kIrregularitySpectrumNames, spec.spectrum)))
+          .field("seed", double(spec.seed))
+          .field("wavelength_min_m", spec.wavelength_min_m)
+          .field("wavelength_max_m", spec.wavelength_max_m)
+          .field("components", spec.components);
+    }
+    j.field("start_m", irr.first_m())
+        .field("length_m", irr.last_m() - irr.first_m())
         .field("sample_interval_m", spec.sample_interval_m)
-        .field("components", spec.components)
         .field("amplitude_scale", spec.amplitude_scale)
         .field("fade_in_m", spec.fade_in_m)
+        .field("fade_out_m", spec.fade_out_m)
         .field("welch_segment_m", check.segment_samples * spec.sample_interval_m)
         .field("welch_segments", check.channels[0].welch.segments);
     j.key("channels").begin_array();
     for (int c = 0; c < kIrregularityChannels; ++c) {
       const IrregularityChannelCheck& ch = check.channels[size_t(c)];
-      j.begin_object()
-          .field("name", channel_name(c))
-          .field("sample_rms_m", ch.sample_rms_m)
-          .field("synthesised_rms_m", ch.synthesised_rms_m)
-          .field("target_rms_m", ch.target_rms_m)
-          .end_object();
+      j.begin_object().field("name", channel_name(c)).field("sample_rms_m", ch.sample_rms_m);
+      if (check.has_target)
+        j.field("synthesised_rms_m", ch.synthesised_rms_m).field("target_rms_m", ch.target_rms_m);
+      j.end_object();
       shown << "  " << std::left << std::setw(12) << channel_name(c) << std::right << " rms "
-            << ch.sample_rms_m * 1e3 << " mm (target over the band " << ch.target_rms_m * 1e3 << " mm)\n";
+            << ch.sample_rms_m * 1e3 << " mm";
+      if (check.has_target) shown << " (target over the band " << ch.target_rms_m * 1e3 << " mm)";
+      shown << "\n";
     }
     j.end_array().end_object();
   });
@@ -99,8 +111,7 @@ std::string write_irregularity_report(const TrackIrregularities& irr, const Irre
          << "set terminal pngcairo size 900,700 font 'Sans,10' noenhanced\n"
          << "set output " << gnuplot_text(channels_png) << "\n"
          << "set multiplot layout 4,1 title "
-         << gnuplot_text(scene_name + ": track irregularities (" +
-                         std::string(name_in(kIrregularitySpectrumNames, spec.spectrum)) + ")")
+         << gnuplot_text(scene_name + ": track irregularities (" + source + ")")
          << "\nset grid\n";
       for (int c = 0; c < kIrregularityChannels; ++c)
         gp << "set ylabel " << gnuplot_text(channel_name(c) + " [mm]") << "\n"
@@ -108,17 +119,23 @@ std::string write_irregularity_report(const TrackIrregularities& irr, const Irre
            << "plot channels_csv skip 1 using 1:($" << 2 + c << "*1000) with lines lw 1 notitle\n";
       gp << "unset multiplot\n"
          << "set output " << gnuplot_text(psd_png) << "\n"
-         << "set multiplot layout 2,2 title " << gnuplot_text(scene_name + ": PSD of the irregularities (Welch) against the target")
+         << "set multiplot layout 2,2 title "
+         << gnuplot_text(scene_name + (check.has_target ? ": PSD of the irregularities (Welch) against the target"
+                                                        : ": PSD of the irregularities (Welch)"))
          << "\nset logscale xy\nset grid\nset xlabel 'Omega [rad/m]'\nset ylabel 'PSD [m^2/(rad/m)]'\n"
          // The band and an octave either side: beyond it the estimate is the
          // window's leakage floor, decades down.
          << "set xrange [" << std::numbers::pi / spec.wavelength_max_m << ":" << 4.0 * std::numbers::pi / spec.wavelength_min_m << "]\n"
          << "set key bottom left\n";
-      for (int c = 0; c < kIrregularityChannels; ++c)
+      for (int c = 0; c < kIrregularityChannels; ++c) {
         gp << "set title " << gnuplot_text(channel_name(c)) << "\n"
            << "plot psd_csv skip 1 using 1:($" << 3 + 2 * c << ">0?$" << 3 + 2 * c
-           << ":1/0) with lines lw 1 title 'Welch', psd_csv skip 1 using 1:($" << 4 + 2 * c << ">0?$"
-           << 4 + 2 * c << ":1/0) with lines lw 2 lc 'black' dt 2 title 'target'\n";
+           << ":1/0) with lines lw 1 title 'Welch'";
+        if (check.has_target)
+          gp << ", psd_csv skip 1 using 1:($" << 4 + 2 * c << ">0?$" << 4 + 2 * c
+             << ":1/0) with lines lw 2 lc 'black' dt 2 title 'target'";
+        gp << "\n";
+      }
       gp << "unset multiplot\n";
     });
     outputs.add(channels_png);

@@ -34,6 +34,11 @@ std::string simulation_run_json(const Model& model, double speed_m_per_s,
       .field("rhs_evaluations", int(traj.stats.rhs_evaluations))
       .field("jacobian_evaluations", int(traj.stats.jacobian_evaluations))
       .field("stopped_early", traj.stopped_early);
+  j.key("track_irregularities");
+  if (const TrackIrregularities* irr = model.track.irregularities())
+    j.value(irregularity_description(*irr));
+  else
+    j.null();
   j.key("start").begin_object();
   if (start.on_mode) {
     j.field("kind", "mode")

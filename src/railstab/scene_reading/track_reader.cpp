@@ -1,5 +1,7 @@
 #include <railstab/scene_reading/track_reader.hpp>
 
+#include <railstab/io/regular_file.hpp>
+#include <railstab/irregularity/measured_irregularity_file.hpp>
 #include <railstab/scene/physical_ranges.hpp>
 
 #include <cmath>
@@ -64,21 +66,50 @@ TrackSegmentSpec read_segment(const TableReader& segment, double start_curvature
 
 const Choices<IrregularitySpectrum> kSpectra = choices_of(kIrregularitySpectrumNames);
 
+// The synthesis keys: with `file` they do not apply.
+constexpr std::string_view kSynthesisKeys[] = {"psd", "seed", "wavelength_min_m", "start_m", "length_m",
+                                               "components"};
+
+// [track.irregularities] from a measured file (`file = "..."`, resolved
+// against the scene's folder; irregularity/measured_irregularity_file.hpp).
+void read_measured(const TableReader& table, IrregularitySpec& spec) {
+  for (std::string_view key : kSynthesisKeys)
+    table.reject_if_present(key, "no synthesis key beside `file` (a measured record is used as it is)");
+  const std::string path = path_relative_to_file(table.source(), table.text("file"));
+  try {
+    spec.measured = read_measured_irregularities(path);
+  } catch (const IrregularityFileError& e) {
+    throw SceneError(table.source() + ": " + table.path_of("file") + ": " + e.what());
+  }
+  spec.start_m = spec.measured->arc_length_m.front();
+  spec.length_m = spec.measured->arc_length_m.back() - spec.start_m;
+}
+
 // [track.irregularities] (irregularity/irregularity_spec.hpp).
 IrregularitySpec read_irregularities(const TableReader& table) {
   IrregularitySpec spec;
-  spec.spectrum = table.choice("psd", kSpectra);
-  spec.seed = std::uint64_t(
-      table.whole_number_or("seed", 0.0, 9007199254740992.0, double(spec.seed), "a whole number in [0, 2^53]"));
-  spec.wavelength_min_m = table.number_or("wavelength_min_m", "m", spec.wavelength_min_m);
+  if (table.has("file") && table.has("psd"))
+    table.fail_here("either psd (synthesised) or file (measured)", "both");
+  if (!table.has("file") && !table.has("psd"))
+    table.fail("psd", "a spectrum (psd = \"erri_b176_low\", ...) or a measured file (file = \"track.csv\")",
+               kMissingKey);
+  if (table.has("file")) {
+    read_measured(table, spec);
+  } else {
+    spec.spectrum = table.choice("psd", kSpectra);
+    spec.seed = std::uint64_t(
+        table.whole_number_or("seed", 0.0, 9007199254740992.0, double(spec.seed), "a whole number in [0, 2^53]"));
+    spec.wavelength_min_m = table.number_or("wavelength_min_m", "m", spec.wavelength_min_m);
+    spec.start_m = table.number_or("start_m", "m", spec.start_m);
+    spec.length_m = table.number_or("length_m", "m", spec.length_m);
+    spec.components = int(table.whole_number_or("components", 1.0, 100000.0, double(spec.components),
+                                                 "a whole number of cosines in [1, 100000]"));
+  }
   spec.wavelength_max_m = table.number_or("wavelength_max_m", "m", spec.wavelength_max_m);
-  spec.start_m = table.number_or("start_m", "m", spec.start_m);
-  spec.length_m = table.number_or("length_m", "m", spec.length_m);
   spec.sample_interval_m = table.number_or("sample_interval_m", "m", spec.sample_interval_m);
-  spec.components = int(table.whole_number_or("components", 1.0, 100000.0, double(spec.components),
-                                               "a whole number of cosines in [1, 100000]"));
   spec.amplitude_scale = table.number_or("amplitude_scale", "", spec.amplitude_scale);
   spec.fade_in_m = table.number_or("fade_in_m", "m", spec.fade_in_m);
+  spec.fade_out_m = table.number_or("fade_out_m", "m", spec.fade_out_m);
   if (!(spec.wavelength_min_m > 0.0 && spec.wavelength_min_m < spec.wavelength_max_m &&
         spec.wavelength_max_m <= 1000.0))
     table.fail("wavelength_max_m", "wavelength_min_m > 0 below wavelength_max_m <= 1000 m",
@@ -86,17 +117,19 @@ IrregularitySpec read_irregularities(const TableReader& table) {
   if (!(spec.sample_interval_m >= 0.01 && spec.sample_interval_m <= spec.wavelength_min_m / 4.0))
     table.fail("sample_interval_m", "[0.01 m, wavelength_min_m / 4] (four samples per shortest wave)",
                format_number(spec.sample_interval_m));
-  if (!(spec.length_m > 0.0 && spec.length_m <= 1e5))
+  if (!spec.measured && !(spec.length_m > 0.0 && spec.length_m <= 1e5))
     table.fail("length_m", "(0, 1e5] m", format_number(spec.length_m));
-  if (!(spec.length_m / spec.sample_interval_m * spec.components <= 4e9))
+  if (!spec.measured && !(spec.length_m / spec.sample_interval_m * spec.components <= 4e9))
     table.fail("components", "length_m / sample_interval_m x components <= 4e9 (the synthesis work)",
                format_number(spec.length_m / spec.sample_interval_m * spec.components));
-  if (!(spec.start_m >= 0.0 && spec.start_m <= 1e7))
+  if (!spec.measured && !(spec.start_m >= 0.0 && spec.start_m <= 1e7))
     table.fail("start_m", "[0, 1e7] m", format_number(spec.start_m));
   if (!(spec.amplitude_scale >= 0.0 && spec.amplitude_scale <= 10.0))
     table.fail("amplitude_scale", "[0, 10]", format_number(spec.amplitude_scale));
   if (!(spec.fade_in_m >= 0.0 && spec.fade_in_m <= spec.length_m))
-    table.fail("fade_in_m", "[0, length_m]", format_number(spec.fade_in_m));
+    table.fail("fade_in_m", "[0, length_m] (the length of the irregular stretch)", format_number(spec.fade_in_m));
+  if (!(spec.fade_out_m >= 0.0 && spec.fade_in_m + spec.fade_out_m <= spec.length_m))
+    table.fail("fade_out_m", "[0, length_m - fade_in_m] (the length of the irregular stretch)", format_number(spec.fade_out_m));
   return spec;
 }
 
@@ -126,8 +159,9 @@ TrackSpec read_track(const TableReader& top) {
     cant = spec.segments.back().end_cant_m;
   }
   if (const std::optional<TableReader> irregularities = track.optional_table(
-          "irregularities", {"psd", "seed", "wavelength_min_m", "wavelength_max_m", "start_m", "length_m",
-                             "sample_interval_m", "components", "amplitude_scale", "fade_in_m"}))
+          "irregularities", {"psd", "file", "seed", "wavelength_min_m", "wavelength_max_m", "start_m",
+                             "length_m", "sample_interval_m", "components", "amplitude_scale", "fade_in_m",
+                             "fade_out_m"}))
     spec.irregularities = read_irregularities(*irregularities);
   return spec;
 }

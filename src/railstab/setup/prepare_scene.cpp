@@ -42,24 +42,24 @@ void check_reference_override(const SceneSpec& spec, double reference_m) {
                      ", " + number_text(highest) + "] m), got " + number_text(reference_m));
 }
 
-// Irregular track is read, synthesised and written (`railstab track`) but
-// not yet applied to the wheel-rail contact: an analysis of such a scene
-// would silently run on perfect track, so it is refused instead.
+// Irregular track is applied by the time-domain commands only: a steady
+// state or a linearisation is of the design track, and running one on a
+// scene that has irregularities would silently leave them out.
 void refuse_irregular_track(const SceneSpec& spec) {
   if (spec.track.irregularities)
     throw SceneError(
         (spec.source_path.empty() ? std::string("<scene>") : spec.source_path) +
         ": track.irregularities: expected no irregularities for this command, got a "
-        "[track.irregularities] section: irregular track is synthesised and written by `railstab "
-        "track` but not yet applied to the wheel-rail contact (docs/irregular_track.md); remove the "
-        "section to analyse the vehicle on perfect track");
+        "[track.irregularities] section: irregular track is applied by the time-domain commands "
+        "(simulate, verify, assess) and written by `railstab track`; this analysis is of the design "
+        "track (docs/irregular_track.md): remove the section to run it");
 }
 
 }  // namespace
 
 SceneSpec load_scene_with_overrides(const std::string& path, const SceneOverrides& overrides) {
   SceneSpec spec = load_scene_file(path, overrides.values);  // read and checked
-  refuse_irregular_track(spec);
+  if (!overrides.apply_track_irregularities) refuse_irregular_track(spec);
   try {
     build_contact_tables(spec);
   } catch (const SceneError& e) {
@@ -87,7 +87,7 @@ SceneSpec load_scene_with_overrides(const std::string& path, const SceneOverride
 }
 
 PreparedScene prepare_scene(const std::string& path, const SceneOverrides& overrides) {
-  return prepare_scene(load_scene_with_overrides(path, overrides));
+  return prepare_scene(load_scene_with_overrides(path, overrides), overrides.apply_track_irregularities);
 }
 
 namespace {
@@ -123,8 +123,8 @@ EquilibriumResult steady_state_by_speed_ramp(const Model& model, double V,
 
 }  // namespace
 
-PreparedScene prepare_scene(SceneSpec spec) {
-  refuse_irregular_track(spec);
+PreparedScene prepare_scene(SceneSpec spec, bool apply_track_irregularities) {
+  if (!apply_track_irregularities) refuse_irregular_track(spec);
   build_contact_tables(spec);  // into the spec: later models built from it share them
   Model model = build_model(spec);
   const double V = spec.speed_m_per_s;

@@ -26,6 +26,11 @@ struct SceneOverrides {
   // --offset BODY.COORDINATE=VALUE (setup/initial_offsets.hpp): initial
   // offsets written into the bodies' initial_offset, in order.
   std::vector<OffsetSetting> offsets;
+  // The time-domain commands (simulate, verify, assess) set this: a scene's
+  // [track.irregularities] are then applied to the wheel-rail contact. Every
+  // other analysis is of the design track (a steady state, a linearisation)
+  // and refuses such a scene rather than silently leave them out.
+  bool apply_track_irregularities = false;
 };
 
 struct PreparedScene {
@@ -42,8 +47,9 @@ PreparedScene prepare_scene(const std::string& path, const SceneOverrides& overr
 // those values enter: the rest of the scene was checked when read).
 SceneSpec load_scene_with_overrides(const std::string& path, const SceneOverrides& overrides);
 // The same from a scene already read and checked (overrides applied by the
-// caller); builds the contact tables it lacks.
-PreparedScene prepare_scene(SceneSpec spec);
+// caller); builds the contact tables it lacks. A scene with
+// [track.irregularities] is refused unless apply_track_irregularities.
+PreparedScene prepare_scene(SceneSpec spec, bool apply_track_irregularities = false);
 
 // Equilibrium state plus the scene's initial offsets and rates.
 Eigen::VectorXd perturbed_initial_state(const PreparedScene& scene);

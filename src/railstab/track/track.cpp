@@ -236,6 +236,7 @@ Track::Track(const TrackSpec& spec) : spec_(spec) {
     start = state_at(i, laws_[i].length_m);
   }
   total_length_m_ = start.s_m;
+  if (spec_.irregularities) irregularities_ = std::make_shared<const TrackIrregularities>(*spec_.irregularities);
 }
 
 // Validates segment `index` against its (already chained) start and records
@@ -413,6 +414,17 @@ TrackFrameKinematics Track::frame_at(double s_m, double speed_m_per_s,
   k.v_WT_T = k.R_WT.transpose() * (v * tangent);
   k.a_WT_T = k.R_WT.transpose() * (v * v * tangent_rate);
   if (a != 0.0) k.a_WT_T += k.R_WT.transpose() * (a * tangent);
+  if (irregularities_) {
+    // y_left = alignment + gauge/2, y_right = alignment - gauge/2,
+    // z_left = level + cross_level/2, z_right = level - cross_level/2.
+    const TrackIrregularities& irr = *irregularities_;
+    const double alignment = irr.at(IrregularityChannel::alignment, s_m).f;
+    const double level = irr.at(IrregularityChannel::level, s_m).f;
+    const double cross_level = irr.at(IrregularityChannel::cross_level, s_m).f;
+    const double gauge = irr.at(IrregularityChannel::gauge, s_m).f;
+    k.rails[0] = {alignment + 0.5 * gauge, level + 0.5 * cross_level};
+    k.rails[1] = {alignment - 0.5 * gauge, level - 0.5 * cross_level};
+  }
   return k;
 }
 

@@ -7,10 +7,13 @@
 // R_WT = A = Az(heading) Ay(grade) Ax(roll). The seed track has no grade
 // (grade = 0) but the formulas keep it. Roll = -asin(cant / D) (cant > 0 raises
 // the right rail, see scene/scene_spec.hpp).
+#include <railstab/irregularity/track_irregularities.hpp>
 #include <railstab/track/track_spec.hpp>
 
 #include <Eigen/Dense>
 
+#include <array>
+#include <memory>
 #include <vector>
 
 namespace railstab {
@@ -30,6 +33,13 @@ struct TrackGeometryPoint {
   int segment = 0;  // index of the segment that contains s
 };
 
+// Where one rail is moved from its design position by the track
+// irregularities, in the track frame T (m): +y left, +z up. Each rail is
+// translated, not rotated (docs/irregular_track.md, "In the contact").
+struct RailDisplacement {
+  double lateral_m = 0.0, vertical_m = 0.0;
+};
+
 // Kinematics of a track frame moving along the track at speed V (and
 // acceleration dV/dt).
 struct TrackFrameKinematics {
@@ -39,6 +49,10 @@ struct TrackFrameKinematics {
   Eigen::Vector3d a_WT_T = Eigen::Vector3d::Zero();       // origin acceleration, in T
   Eigen::Vector3d w_WT_T = Eigen::Vector3d::Zero();       // angular velocity of T, in T
   Eigen::Vector3d alpha_WT_T = Eigen::Vector3d::Zero();   // d/dt of w_WT_T components
+  // The rails at this arc length: [0] left (side +1), [1] right (side -1);
+  // zero on perfect track.
+  std::array<RailDisplacement, 2> rails{};
+  const RailDisplacement& rail(int side) const { return rails[side > 0 ? 0 : 1]; }
 };
 
 class Track {
@@ -52,6 +66,9 @@ class Track {
                                 double speed_rate_m_per_s2 = 0.0) const;
 
   double length_m() const { return total_length_m_; }
+  // The irregularities frame_at applies (null: perfect track). Built once
+  // with the track and shared by its copies.
+  const TrackIrregularities* irregularities() const { return irregularities_.get(); }
   // Where the constant-curvature, constant-cant stretch through s_m ends
   // (consecutive tangents or arcs with equal curvature and cant merge): the
   // limit of runs that must stay at one steady rolling/curving state. s_m
@@ -88,6 +105,7 @@ class Track {
   std::vector<SegmentLaw> laws_;
   std::vector<Eigen::Vector2d> piece_xy_;
   double total_length_m_ = 0.0;
+  std::shared_ptr<const TrackIrregularities> irregularities_;
 };
 
 // A = Az(heading) Ay(grade) Ax(roll).
