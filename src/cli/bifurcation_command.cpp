@@ -34,6 +34,9 @@ void run_bifurcation(const BifurcationArgs& a) {
         << o.linear.from_m_per_s << " and --to " << o.linear.to_m_per_s << " m/s";
     throw std::invalid_argument(msg.str());
   }
+  if (!o.from_hopf && !(o.cycle_speed_m_per_s > 0.0))
+    throw std::invalid_argument(
+        "--no-hopf-branch leaves no branch to compute: give --cycle-speed V as well");
   if (a.plots) require_gnuplot();  // before the orbits, not after them
   const PreparedScene s = prepare_command_scene(a);
   o.linear.stability.solver = eigen_solver_from_name(a.solver);
@@ -91,6 +94,10 @@ void register_bifurcation_command(CLI::App& app) {
                   "also start a branch from the cycle a time-domain run settles on at this speed "
                   "(m/s; from the steady state with the leading wheelset displaced 5 mm, 6 s)")
       ->check(finite_in(flag_ranges::speed_m_per_s));
+  cmd->add_flag("--no-hopf-branch", [a](std::int64_t) { a->options.from_hopf = false; },
+               "do not start a branch at the Hopf point (only the --cycle-speed branch): on a "
+               "profile contact the orbits near the Hopf point are micrometres in size and "
+               "costly; the hunting that matters starts from a cycle");
   cmd->add_option("--max-amplitude", a->options.max_amplitude_m,
                   "stop a branch where the leading wheelset's lateral amplitude exceeds this (m)")
       ->capture_default_str()

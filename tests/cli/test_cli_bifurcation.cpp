@@ -180,6 +180,7 @@ TEST(CliBifurcation, BadFlagsNameTheFlagAndWriteNothing) {
       {{"--cycle-speed", "inf"}, "--cycle-speed"},
       {{"--cycle-speed", "120", "--to", "100"}, "--cycle-speed 120 m/s must lie between --from"},
       {{"--max-orbits", "1"}, "--max-orbits"},
+      {{"--no-hopf-branch"}, "--no-hopf-branch leaves no branch to compute: give --cycle-speed V"},
   };
   for (const Case& c : cases) {
     std::vector<std::string> args = {"bifurcation", kScene};
@@ -190,4 +191,21 @@ TEST(CliBifurcation, BadFlagsNameTheFlagAndWriteNothing) {
     EXPECT_NE(run.output.find(c.message), std::string::npos) << run.output;
     EXPECT_FALSE(fs::exists(dir / "out")) << c.flags[0];
   }
+}
+
+// --no-hopf-branch computes the --cycle-speed branch alone: the JSON holds
+// one branch, of time-domain origin (on the textbook wheelset above its
+// critical speed the run grows to the flange clearance, so that branch is
+// not started, and says why).
+TEST(CliBifurcation, NoHopfBranchLeavesOnlyTheCycleBranch) {
+  const fs::path dir = test::fresh_dir("cli_bifurcation", "no_hopf_branch");
+  std::vector<std::string> args = {"bifurcation", kScene};
+  args.insert(args.end(), kFlags.begin(), kFlags.end());
+  args.insert(args.end(), {"--cycle-speed", "80", "--no-hopf-branch", "--no-plots", "--out", "out"});
+  const test::CliRun run = test::run_railstab(args, dir);
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const std::string json = test::read_text(dir / "out" / (kStem + "_bifurcation.json"));
+  const std::vector<std::string> origins = json_values(json, "origin");
+  ASSERT_EQ(origins.size(), 1u) << json;
+  EXPECT_EQ(origins[0], "\"time_domain\"");
 }

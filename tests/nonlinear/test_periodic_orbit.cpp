@@ -114,6 +114,58 @@ TEST(PeriodicOrbitNormalForm, RadiusPeriodAndMultipliersMatchTheClosedForm) {
   EXPECT_LE(o.newton_iterations, 6);
 }
 
+// A guess far from the orbit (radius 1.0 for 0.3, period 20 % long): a full
+// Newton step raises the residual; shortened, it reduces it and Newton ends
+// on the closed form. Without step shortening (max_step_halvings 0) the
+// same guess is refused.
+TEST(PeriodicOrbitNormalForm, DampedNewtonReachesTheOrbitFromAFarGuess) {
+  const FlowSystem s = normal_form(false);
+  const double V = kHopfSpeed + 0.09;
+  Eigen::VectorXd guess(3);
+  guess << 1.0, 0.0, 0.0;
+  ShootingOptions o = tight_shooting();
+  o.max_newton_iterations = 40;
+  const PeriodicOrbit orbit =
+      solve_periodic_orbit(s, kNormalFormCoords, OrbitConstraint::fixed_speed(V), guess, 1.2, V, o);
+  EXPECT_NEAR(orbit.start(0), 0.3, 1e-9);
+  EXPECT_NEAR(orbit.period_s, 1.0, 1e-9);
+  EXPECT_GE(orbit.damped_steps, 1);
+  std::printf("[ damped   ] %d iterations, %d damped steps, %d flows with sensitivities\n",
+              orbit.newton_iterations, orbit.damped_steps, orbit.sensitivity_flows);
+  o.max_step_halvings = 0;
+  EXPECT_THROW(solve_periodic_orbit(s, kNormalFormCoords, OrbitConstraint::fixed_speed(V), guess,
+                                    1.2, V, o),
+               ShootingFailure);
+}
+
+// Chord iterations on a neighbour's derivatives (the continuation's case)
+// end on the same orbit as Newton with fresh derivatives, to the
+// tolerance, with fewer flows carrying the variational equations (the
+// dear ones on a railway model: one AD Jacobian per step).
+TEST(PeriodicOrbitNormalForm, ChordIterationsEndOnTheSameOrbit) {
+  const FlowSystem s = normal_form(false);
+  Eigen::VectorXd guess(3);
+  guess << 0.3, 0.0, slave_at_section(0.3);
+  const ShootingOptions o = tight_shooting();
+  const PeriodicOrbit near = solve_periodic_orbit(
+      s, kNormalFormCoords, OrbitConstraint::fixed_speed(kHopfSpeed + 0.09), guess, 1.0, kHopfSpeed + 0.09, o);
+  const double V = kHopfSpeed + 0.1;  // r = sqrt(0.1)
+  guess << 0.31, 0.0, slave_at_section(0.31);
+  const PeriodicOrbit chord = solve_periodic_orbit(s, kNormalFormCoords, OrbitConstraint::fixed_speed(V),
+                                                   guess, 1.0, V, o, &near);
+  const PeriodicOrbit exact = solve_periodic_orbit(s, kNormalFormCoords, OrbitConstraint::fixed_speed(V),
+                                                   guess, 1.0, V, o);
+  EXPECT_NEAR(chord.start(0), std::sqrt(0.1), 1e-9);
+  EXPECT_NEAR(exact.start(0), std::sqrt(0.1), 1e-9);
+  EXPECT_NEAR(std::abs(chord.critical_multiplier - std::exp(-2.0 * 0.1)), 0.0, 1e-7);
+  EXPECT_NEAR(chord.period_s, exact.period_s, 1e-9);
+  EXPECT_GE(exact.sensitivity_flows, exact.newton_iterations);
+  EXPECT_LE(chord.sensitivity_flows, 2);
+  EXPECT_LT(chord.sensitivity_flows, exact.sensitivity_flows);
+  std::printf("[ chord    ] chord: %d iterations, %d with sensitivities; Newton: %d iterations\n",
+              chord.newton_iterations, chord.sensitivity_flows, exact.newton_iterations);
+}
+
 TEST(PeriodicOrbitNormalForm, BadGuessesAndCoordinatesAreRefused) {
   const FlowSystem s = normal_form(false);
   Eigen::VectorXd guess(3);

@@ -157,17 +157,22 @@ OrbitBranch continue_branch(const FlowSystem& system, const OrbitCoordinates& co
       OrbitConstraint constraint{tV / sV, ta / sa, V_pred, x_pred(ia)};
       try {
         PeriodicOrbit next = solve_periodic_orbit(system, coords, constraint, x_pred, T_pred,
-                                                  V_pred, options.shooting);
+                                                  V_pred, options.shooting, &c);
         // Refuse a jump back along the branch or onto another one: the new
         // secant must point the way of the last.
         const double nV = (next.speed_m_per_s - c.speed_m_per_s) / sV;
         const double na = (next.start(ia) - c.start(ia)) / sa;
         if (nV * tV + na * ta <= 0.0) throw ShootingFailure("the corrector went backwards");
         const int iterations = next.newton_iterations;
+        // Fast: few iterations, or cheap chord iterations that needed no
+        // fresh derivatives before the converged orbit's.
+        const bool fast = iterations <= options.fast_newton_iterations ||
+                          (next.sensitivity_flows <= 1 &&
+                           iterations <= 3 * options.fast_newton_iterations);
         branch.orbits.push_back(std::move(next));
         accepted = true;
         if (options.progress) options.progress(int(branch.orbits.size()), branch.orbits.back());
-        if (iterations <= options.fast_newton_iterations)
+        if (fast)
           h = std::min(options.max_step, h * options.growth_factor);
       } catch (const ShootingFailure&) {
         ++branch.failed_correctors;
@@ -185,8 +190,19 @@ OrbitBranch continue_from_orbit(const FlowSystem& system, const OrbitCoordinates
                                 const PeriodicOrbit& first, double speed_step_m_per_s,
                                 const ContinuationOptions& options) {
   const double V2 = first.speed_m_per_s + speed_step_m_per_s;
+  // Predicted along the orbit's tangent in speed (the spin rates alone move
+  // by dV / r0: a guess at the first orbit's state cost a flange-hunting
+  // bogie 11 damped Newton iterations instead of 3-4).
+  const OrbitSpeedTangent t = orbit_speed_tangent(first, coords);
+  Eigen::VectorXd guess = first.start;
+  double period = first.period_s;
+  if (t.start_per_speed.size() == guess.size()) {
+    guess += speed_step_m_per_s * t.start_per_speed;
+    period += speed_step_m_per_s * t.period_per_speed;
+    if (!(period > 0.0)) guess = first.start, period = first.period_s;
+  }
   PeriodicOrbit second = solve_periodic_orbit(system, coords, OrbitConstraint::fixed_speed(V2),
-                                              first.start, first.period_s, V2, options.shooting);
+                                              guess, period, V2, options.shooting, &first);
   return continue_branch(system, coords, {first, std::move(second)}, options);
 }
 
@@ -214,12 +230,27 @@ OrbitBranch continue_from_hopf(const FlowSystem& system, const OrbitCoordinates&
     return start.critical_speed_m_per_s + start.cycle_side * r * r;
   };
   std::vector<PeriodicOrbit> first_two;
-  for (double excursion : {first_excursion, 2.0 * first_excursion}) {
-    const Eigen::VectorXd guess = start.equilibrium + excursion * shape;
-    const double a = start.equilibrium(ia) + excursion;
-    first_two.push_back(solve_periodic_orbit(system, coords, OrbitConstraint::fixed_excursion(a),
-                                             guess, period, predicted_speed(excursion),
-                                             options.shooting));
+  first_two.push_back(solve_periodic_orbit(
+      system, coords, OrbitConstraint::fixed_excursion(start.equilibrium(ia) + first_excursion),
+      start.equilibrium + first_excursion * shape, period, predicted_speed(first_excursion),
+      options.shooting));
+  // The second at twice the excursion: from the square-root law where l1 is
+  // known; without it (a profile contact's table is only C1, so the orbits
+  // need not follow the law) from the first orbit, its offset from the
+  // steady state doubled and its speed offset from V_c doubled (the linear
+  // law of a kinked contact function), which is nearer than the linear mode.
+  const double second_excursion = 2.0 * first_excursion;
+  const OrbitConstraint second = OrbitConstraint::fixed_excursion(start.equilibrium(ia) + second_excursion);
+  if (start.cycle_side != 0) {
+    first_two.push_back(solve_periodic_orbit(system, coords, second,
+                                             start.equilibrium + second_excursion * shape, period,
+                                             predicted_speed(second_excursion), options.shooting));
+  } else {
+    const PeriodicOrbit& first = first_two.front();
+    const Eigen::VectorXd guess = start.equilibrium + 2.0 * (first.start - start.equilibrium);
+    const double speed = 2.0 * first.speed_m_per_s - start.critical_speed_m_per_s;
+    first_two.push_back(solve_periodic_orbit(system, coords, second, guess, first.period_s, speed,
+                                             options.shooting, &first));
   }
   return continue_branch(system, coords, std::move(first_two), options);
 }

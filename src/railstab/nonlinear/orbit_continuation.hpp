@@ -74,7 +74,8 @@ struct OrbitBranch {
 // law a = amplitude_per_sqrt_speed sqrt(cycle_side (V - V_c)) of the
 // amplitude state (hopf_criticality.hpp); the orbits at excursions
 // first_excursion and 2 first_excursion, each corrected at fixed excursion
-// (V free). cycle_side 0 (no prediction): the guesses are V_c.
+// (V free). cycle_side 0 (no prediction): the first guess is V_c, the
+// second the first orbit with its offset from x_eq and from V_c doubled.
 struct HopfStart {
   Eigen::VectorXd equilibrium;
   double critical_speed_m_per_s = 0.0;

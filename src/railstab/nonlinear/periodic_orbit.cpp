@@ -72,7 +72,7 @@ void classify_floquet_multipliers(PeriodicOrbit& orbit, const Eigen::VectorXd& f
 PeriodicOrbit solve_periodic_orbit(const FlowSystem& system, const OrbitCoordinates& coords,
                                    const OrbitConstraint& constraint, Eigen::VectorXd x0,
                                    double period_s, double speed_m_per_s,
-                                   const ShootingOptions& options) {
+                                   const ShootingOptions& options, const PeriodicOrbit* chord_from) {
   require_coordinates(system, coords);
   const int n = system.size;
   if (x0.size() != n) throw std::invalid_argument("periodic orbit: guess has the wrong size");
@@ -82,43 +82,64 @@ PeriodicOrbit solve_periodic_orbit(const FlowSystem& system, const OrbitCoordina
   x0(is) = 0.0;  // on the section from the start
   double T = period_s, V = speed_m_per_s;
   PeriodicOrbit orbit;
-  FlowOptions flow_options = options.flow;
-  flow_options.sensitivities = true;
-  flow_options.samples = options.samples_per_period;
-  Eigen::VectorXd range = Eigen::VectorXd::Zero(n);
-  double last_step_norm = std::numeric_limits<double>::infinity();
-  // One flow over the current period; its work added to the orbit's.
-  auto shoot = [&] {
+  // One flow over the period from x at speed V, with or without the
+  // variational equations; its work added to the orbit's.
+  auto shoot = [&](const Eigen::VectorXd& x, double period, double speed, bool sensitivities) {
+    FlowOptions flow_options = options.flow;
+    flow_options.sensitivities = sensitivities;
+    flow_options.samples = options.samples_per_period;
     FlowResult flow;
     try {
-      flow = integrate_flow(system, x0, V, T, flow_options);
+      flow = integrate_flow(system, x, speed, period, flow_options);
     } catch (const std::exception& e) {
       throw ShootingFailure(std::string("periodic orbit: ") + e.what());
     }
     orbit.integration_steps += flow.steps;
     orbit.jacobian_evaluations += flow.jacobian_evaluations;
+    orbit.sensitivity_flows += sensitivities ? 1 : 0;
     return flow;
   };
+  // Each state's peak-to-peak over a flow's samples.
+  auto range_of = [](const FlowResult& flow) -> Eigen::VectorXd {
+    Eigen::VectorXd lo = flow.samples.front(), hi = lo;
+    for (const auto& s : flow.samples) lo = lo.cwiseMin(s), hi = hi.cwiseMax(s);
+    return hi - lo;
+  };
+  // The residual (see the header) of the start x, period and speed whose flow is `flow`.
+  auto residual_of = [&](const FlowResult& flow, const Eigen::VectorXd& x, double speed) {
+    Eigen::VectorXd r(n + 2);
+    r.head(n) = flow.end_state - x;
+    r(n) = x(is);
+    r(n + 1) = constraint.speed_coefficient * (speed - constraint.reference_speed_m_per_s) +
+               constraint.amplitude_coefficient * (x(ia) - constraint.reference_amplitude);
+    return r;
+  };
+  // The derivatives in Newton's matrix: exact from the last flow with the
+  // variational equations, or (chord) kept from an earlier one.
+  Eigen::MatrixXd chord_monodromy;
+  Eigen::VectorXd chord_speed_sensitivity;
+  const bool chord = options.chord_iterations && chord_from != nullptr &&
+                     chord_from->monodromy.rows() == n && chord_from->speed_sensitivity.size() == n;
+  if (chord) {
+    chord_monodromy = chord_from->monodromy;
+    chord_speed_sensitivity = chord_from->speed_sensitivity;
+  }
+  FlowResult flow = shoot(x0, T, V, !chord);
+  double last_step_norm = std::numeric_limits<double>::infinity();
   for (int iteration = 1; iteration <= options.max_newton_iterations; ++iteration) {
-    FlowResult flow = shoot();
-    range.setZero();
-    {
-      Eigen::VectorXd lo = flow.samples.front(), hi = lo;
-      for (const auto& s : flow.samples) lo = lo.cwiseMin(s), hi = hi.cwiseMax(s);
-      range = hi - lo;
+    const bool exact = flow.state_sensitivity.rows() == n;
+    if (exact) {
+      chord_monodromy = flow.state_sensitivity;
+      chord_speed_sensitivity = flow.speed_sensitivity;
     }
+    const Eigen::VectorXd range = range_of(flow);
     Eigen::VectorXd f_end;
     system.rhs(flow.end_state, V, f_end);
-    // Residual and Newton matrix (see the header).
-    Eigen::VectorXd r(n + 2);
-    r.head(n) = flow.end_state - x0;
-    r(n) = x0(is);
-    r(n + 1) = constraint.speed_coefficient * (V - constraint.reference_speed_m_per_s) +
-               constraint.amplitude_coefficient * (x0(ia) - constraint.reference_amplitude);
+    const Eigen::VectorXd r = residual_of(flow, x0, V);
     Eigen::MatrixXd N = Eigen::MatrixXd::Zero(n + 2, n + 2);
-    N.topLeftCorner(n, n) = flow.state_sensitivity - Eigen::MatrixXd::Identity(n, n);
+    N.topLeftCorner(n, n) = chord_monodromy - Eigen::MatrixXd::Identity(n, n);
     N.block(0, n, n, 1) = f_end;
-    N.block(0, n + 1, n, 1) = flow.speed_sensitivity;
+    N.block(0, n + 1, n, 1) = chord_speed_sensitivity;
     N(n, is) = 1.0;
     N(n + 1, ia) = constraint.amplitude_coefficient;
     N(n + 1, n + 1) = constraint.speed_coefficient;
@@ -134,26 +155,89 @@ PeriodicOrbit solve_periodic_orbit(const FlowSystem& system, const OrbitCoordina
     const double step_norm =
         std::max({state_norm, std::abs(dz(n)) / (options.newton_relative_tolerance * T),
                   std::abs(dz(n + 1)) / (options.newton_relative_tolerance * std::max(1.0, std::abs(V)))});
-    const bool converged = step_norm <= 1.0;
-    // Take the step unless it is the converging last one, which is then
-    // applied and checked by the final flow below.
-    x0 += dz.head(n);
-    T += dz(n);
-    V += dz(n + 1);
-    x0(is) = 0.0;
-    if (!(T > 0.0))
-      throw ShootingFailure("periodic orbit: the period became non-positive (Newton diverged)");
     orbit.newton_iterations = iteration;
-    if (converged || (iteration > 3 && step_norm > 1e3 * last_step_norm)) {
-      if (!converged)
-        throw ShootingFailure("periodic orbit: Newton diverges at V = " + std::to_string(V) +
-                              " m/s");
-      // The final flow at the corrected point: multipliers, samples, residual.
-      flow = shoot();
+    // Converged: the step is within the tolerance, or within
+    // stagnation_step_norm of it and no longer halving: the flow's own error
+    // is the floor (a period's global error can exceed the tolerance). The
+    // converging step's flow carries the variational equations, so the
+    // orbit's multipliers are exact either way.
+    // Stagnation is judged on exact derivatives only (a chord step's
+    // contraction is linear, not a sign of the floor).
+    const bool converged =
+        step_norm <= 1.0 ||
+        (exact && step_norm <= options.stagnation_step_norm && step_norm > 0.5 * last_step_norm);
+    // A chord step that no longer contracts well, or has reached the
+    // stagnation range: the exact derivatives at the current point, then the
+    // step again.
+    if (!exact && !converged && iteration > 1 &&
+        (step_norm > options.chord_contraction * last_step_norm ||
+         step_norm <= options.stagnation_step_norm)) {
+      flow = shoot(x0, T, V, true);
+      last_step_norm = step_norm;
+      continue;
+    }
+    if (!converged && exact && iteration > 3 && step_norm > 1e3 * last_step_norm)
+      throw ShootingFailure("periodic orbit: Newton diverges at V = " + std::to_string(V) + " m/s");
+    last_step_norm = step_norm;
+    // The step, damped (see the header): the longest fraction lambda of it,
+    // within the period and speed limits, whose flow exists and, away from
+    // convergence, reduces the residual's weighted norm. The converging
+    // step's flow carries the variational equations (the multipliers).
+    double lambda = 1.0;
+    if (std::abs(dz(n)) > options.max_relative_period_step * T)
+      lambda = options.max_relative_period_step * T / std::abs(dz(n));
+    if (std::abs(dz(n + 1)) > options.max_speed_step_m_per_s)
+      lambda = std::min(lambda, options.max_speed_step_m_per_s / std::abs(dz(n + 1)));
+    const double merit = std::sqrt((r.head(n).array() * w).square().mean());
+    // Near convergence the residual is the flow's own error: take the full step.
+    const bool check_merit = step_norm > options.full_step_below_step_norm;
+    const bool trial_sensitivities = converged || !chord;
+    std::string last_failure;
+    bool accepted = false;
+    for (int halving = 0; halving <= options.max_step_halvings && !accepted; ++halving, lambda /= 2) {
+      Eigen::VectorXd x_trial = x0 + lambda * dz.head(n);
+      x_trial(is) = 0.0;
+      const double T_trial = T + lambda * dz(n), V_trial = V + lambda * dz(n + 1);
+      if (!(T_trial > 0.0)) {
+        last_failure = "the period became non-positive";
+        continue;
+      }
+      FlowResult trial;
+      try {
+        trial = shoot(x_trial, T_trial, V_trial, trial_sensitivities);
+      } catch (const ShootingFailure& e) {
+        last_failure = e.what();
+        continue;
+      }
+      const Eigen::VectorXd r_trial = residual_of(trial, x_trial, V_trial);
+      const double merit_trial = std::sqrt((r_trial.head(n).array() * w).square().mean());
+      if (check_merit && !(merit_trial < (1.0 - 1e-4 * lambda) * merit)) {
+        last_failure = "the residual did not decrease";
+        continue;
+      }
+      x0 = std::move(x_trial), T = T_trial, V = V_trial;
+      flow = std::move(trial);
+      orbit.damped_steps += lambda < 1.0 ? 1 : 0;
+      accepted = true;
+    }
+    if (!accepted) {
+      // A chord matrix may point the wrong way: retry with the exact one.
+      if (!exact) {
+        flow = shoot(x0, T, V, true);
+        continue;
+      }
+      throw ShootingFailure("periodic orbit: no damped Newton step at V = " + std::to_string(V) +
+                            " m/s (" + last_failure + " down to a " +
+                            std::to_string(std::ldexp(1.0, -options.max_step_halvings)) +
+                            " step)");
+    }
+    if (converged) {
+      // `flow` is at the corrected point: multipliers, samples, residual.
       orbit.speed_m_per_s = V;
       orbit.period_s = T;
       orbit.start = x0;
       orbit.monodromy = flow.state_sensitivity;
+      orbit.speed_sensitivity = flow.speed_sensitivity;
       orbit.sample_times_s = flow.sample_times_s;
       orbit.samples = flow.samples;
       fill_ranges(orbit);
@@ -163,18 +247,35 @@ PeriodicOrbit solve_periodic_orbit(const FlowSystem& system, const OrbitCoordina
                               "oscillation left at V = " + std::to_string(V) + " m/s)");
       const double scale = std::max(orbit.amplitude.cwiseAbs().maxCoeff(), 1e-300);
       orbit.periodicity_residual = (flow.end_state - x0).cwiseAbs().maxCoeff() / scale;
-      Eigen::VectorXd f0;
-      system.rhs(x0, V, f0);
-      classify_floquet_multipliers(orbit, f0, options.multiplier_tolerance);
+      system.rhs(x0, V, orbit.flow_at_start);
+      classify_floquet_multipliers(orbit, orbit.flow_at_start, options.multiplier_tolerance);
       orbit.cpu_seconds = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
       return orbit;
     }
-    last_step_norm = step_norm;
   }
   std::ostringstream msg;
   msg << "periodic orbit: Newton did not converge in " << options.max_newton_iterations
       << " iterations (V = " << V << " m/s, T = " << T << " s)";
   throw ShootingFailure(msg.str());
+}
+
+OrbitSpeedTangent orbit_speed_tangent(const PeriodicOrbit& orbit, const OrbitCoordinates& coords) {
+  const Eigen::Index n = orbit.start.size();
+  if (orbit.monodromy.rows() != n || orbit.speed_sensitivity.size() != n ||
+      orbit.flow_at_start.size() != n)
+    throw std::invalid_argument("orbit_speed_tangent: the orbit has no monodromy matrix");
+  Eigen::MatrixXd N = Eigen::MatrixXd::Zero(n + 1, n + 1);
+  N.topLeftCorner(n, n) = orbit.monodromy - Eigen::MatrixXd::Identity(n, n);
+  N.block(0, n, n, 1) = orbit.flow_at_start;
+  N(n, coords.section_state) = 1.0;
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n + 1);
+  rhs.head(n) = -orbit.speed_sensitivity;
+  const Eigen::VectorXd d = N.fullPivLu().solve(rhs);
+  OrbitSpeedTangent t;
+  if (!d.allFinite()) return t;  // at a fold: no tangent in speed
+  t.start_per_speed = d.head(n);
+  t.period_per_speed = d(n);
+  return t;
 }
 
 OrbitGuess orbit_guess_from_samples(const std::vector<double>& times_s,

@@ -21,6 +21,16 @@
 //   [ M - I   f(phi)   d phi/dV ]
 //   [ e_s^T     0         0     ]
 //   [ c_a e_a^T 0        c_V    ]
+// Damped Newton: the step dz is scaled by the largest lambda in 1, 1/2, ...,
+// 2^-max_step_halvings such that |lambda dT| <= max_relative_period_step T,
+// |lambda dV| <= max_speed_step_m_per_s, the flow from the new point exists
+// (a full step from a flange-hunting cycle can take a wheel outside its
+// contact table, where the flow stops) and, while the step is large
+// (step norm above full_step_below_step_norm, in units of the convergence
+// tolerance), the weighted RMS of the periodicity residual falls:
+//   ||r(z + lambda dz)||_w < (1 - 1e-4 lambda) ||r(z)||_w,
+// w_k = 1 / (rtol_newton (|x0_k| + range_k) + atol_newton). Near convergence
+// the residual is the flow's own error, so the full step is taken there.
 // M = d phi(T)/d x0 is the monodromy matrix; its eigenvalues are the Floquet
 // multipliers. One is 1 (the flow direction f(x0), the "trivial" one); the
 // orbit is stable when every other has modulus < 1. At a fold of the branch
@@ -60,12 +70,28 @@ struct OrbitConstraint {
 
 struct ShootingOptions {
   FlowOptions flow;             // the flow's tolerances (rtol 1e-8, atol 1e-11)
-  int max_newton_iterations = 12;
+  int max_newton_iterations = 20;  // chord iterations included
+  // The damping of a Newton step (see the header comment).
+  double max_relative_period_step = 0.25;
+  double max_speed_step_m_per_s = 5.0;
+  double full_step_below_step_norm = 1e3;
+  int max_step_halvings = 6;
+  // Chord iterations: with an earlier orbit's derivatives (chord_from, a
+  // neighbour on the branch), Newton's matrix is kept and the flows between
+  // carry the state only (the variational equations make a flow ~25 times
+  // dearer: one AD Jacobian per step); the exact derivatives are taken again
+  // when a step shrinks by less than chord_contraction, and at the converged
+  // orbit (its multipliers).
+  bool chord_iterations = true;
+  double chord_contraction = 0.3;
   // Converged when the Newton step is below these (states: weighted RMS with
   // weights 1 / (rtol (|x0_k| + range_k) + atol), range_k the state's
   // peak-to-peak on the orbit; period and speed relative).
   double newton_relative_tolerance = 1e-7;
   double newton_absolute_tolerance = 1e-10;
+  // Also converged when the step norm is below this and no longer halves
+  // from one iteration to the next (the flow's error is the floor).
+  double stagnation_step_norm = 10.0;
   int samples_per_period = 200;  // for the amplitudes
   // A multiplier counts as on the unit circle within this of modulus 1.
   double multiplier_tolerance = 1e-6;
@@ -76,6 +102,8 @@ struct PeriodicOrbit {
   double period_s = 0.0;
   Eigen::VectorXd start;                   // x0, on the section
   Eigen::MatrixXd monodromy;               // d phi(T)/d x0
+  Eigen::VectorXd speed_sensitivity;       // d phi(T)/dV at x0
+  Eigen::VectorXd flow_at_start;           // f(x0; V)
   Eigen::VectorXcd floquet_multipliers;    // largest modulus first
   int trivial_multiplier = -1;             // index of the multiplier of f(x0)
   double trivial_multiplier_error = 0.0;   // |mu_trivial - 1|
@@ -86,6 +114,8 @@ struct PeriodicOrbit {
   std::vector<double> sample_times_s;      // one period, samples_per_period + 1 points
   std::vector<Eigen::VectorXd> samples;
   int newton_iterations = 0;
+  int damped_steps = 0;                    // Newton steps shortened (lambda < 1)
+  int sensitivity_flows = 0;               // flows with the variational equations
   double periodicity_residual = 0.0;       // max |phi(T) - x0| / max amplitude, at the last flow
   long integration_steps = 0, jacobian_evaluations = 0;  // summed over the Newton iterations
   double cpu_seconds = 0.0;
@@ -96,11 +126,26 @@ struct ShootingFailure : std::runtime_error {
 };
 
 // Newton from the guess (x0, T, V). Throws ShootingFailure when Newton does
-// not converge (or the flow fails) within max_newton_iterations.
+// not converge (or the flow fails) within max_newton_iterations. With
+// `chord_from` (an orbit near the guess), chord iterations on its derivatives
+// first (ShootingOptions::chord_iterations).
 PeriodicOrbit solve_periodic_orbit(const FlowSystem& system, const OrbitCoordinates& coords,
                                    const OrbitConstraint& constraint, Eigen::VectorXd x0,
                                    double period_s, double speed_m_per_s,
-                                   const ShootingOptions& options = {});
+                                   const ShootingOptions& options = {},
+                                   const PeriodicOrbit* chord_from = nullptr);
+
+// The orbit's first-order change with the speed at fixed section: (dx0/dV,
+// dT/dV) from the periodicity and section rows of Newton's matrix,
+//   [ M - I   f(x0) ] [ dx0/dV ]     [ d phi/dV ]
+//   [ e_s^T     0   ] [ dT/dV  ] = - [    0     ],
+// exact at the converged orbit (f(phi(T)) = f(x0)); singular at a fold.
+// The predictor of an orbit at a nearby speed.
+struct OrbitSpeedTangent {
+  Eigen::VectorXd start_per_speed;
+  double period_per_speed = 0.0;
+};
+OrbitSpeedTangent orbit_speed_tangent(const PeriodicOrbit& orbit, const OrbitCoordinates& coords);
 
 // Floquet multipliers of `orbit.monodromy` into the orbit's fields (the
 // trivial one is the eigenvalue whose eigenvector is most nearly parallel to

@@ -301,7 +301,12 @@ std::vector<std::string> plot_diagram(OutputSet& outputs, const std::string& ste
               std::ostringstream s;
               s << "linear critical speed " << std::fixed << std::setprecision(2) << vc << " m/s";
               return s.str();
-            }()) << " at " << vc << ", graph 0.62 right offset -0.5,0 front\n";
+            }()) << " at " << vc
+         // Beside the line on the side with room: left of it in the right
+         // half of the frame, else right of it (a line near the left edge
+         // would push its label out of the frame).
+         << ((vc - lo) > 0.5 * (hi - lo) ? ", graph 0.62 right offset -0.5,0 front\n"
+                                          : ", graph 0.62 left offset 0.5,0 front\n");
     }
     if (r.nonlinear.found) {
       const double vn = r.nonlinear.speed_m_per_s;
