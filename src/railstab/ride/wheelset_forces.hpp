@@ -32,7 +32,11 @@ struct StaticWheelLoad {
 
 // The vehicle's equilibrium on straight, level track at the speed (the same
 // model with its track replaced by one tangent; no speed ramp): one Newton
-// solve. Throws EquilibriumError if it has none.
+// solve from the nominal position; where that fails (above the critical speed the solver's
+// pseudo-transient fallback cannot reach an unstable steady state), solved at
+// kStaticLoadStartSpeed_m_per_s (or half the speed if lower) and continued in
+// speed. Throws EquilibriumError if it has none.
+inline constexpr double kStaticLoadStartSpeed_m_per_s = 10.0;
 std::vector<StaticWheelLoad> static_wheel_loads(const Model& model, double speed_m_per_s);
 
 // Prud'homme's limit alpha (10 kN + P0 / 3) in N, P0 the static axle load.
