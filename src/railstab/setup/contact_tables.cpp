@@ -2,6 +2,7 @@
 
 #include <railstab/contact_geometry/contact_table_file.hpp>
 #include <railstab/contact_geometry/profile_contact_geometry.hpp>
+#include <railstab/contact/rsgeo_table.hpp>
 #include <railstab/scene_reading/load_scene.hpp>
 
 #include <algorithm>
@@ -21,11 +22,12 @@ bool lacks_table(const ContactSpec& contact) {
 // spin rate V / r0 and the pose use it).
 std::shared_ptr<const ProfileContactGeometry> read_table_geometry(const ContactSpec& contact,
                                                                    const std::string& source) {
+  std::shared_ptr<const ProfileContactGeometry> g;
   if (contact.contact_table_format == ContactTableFormat::rsgeo)
-    throw SceneError(source + ": contacts." + contact.name +
-                     ".contact_table_format: expected \"railstab\" (RSGEO tables are not read "
-                     "yet), got \"rsgeo\"");
-  std::shared_ptr<const ProfileContactGeometry> g = read_contact_table_file(contact.contact_table_path);
+    g = read_rsgeo_contact_geometry(contact.contact_table_path, contact.profile_source.table,
+                                    contact.nominal_rolling_radius_m);
+  else
+    g = read_contact_table_file(contact.contact_table_path);
   const double r0 = g->pair.parameters.nominal_rolling_radius_m;
   if (std::abs(r0 - contact.nominal_rolling_radius_m) > 1e-12) {
     std::ostringstream msg;
