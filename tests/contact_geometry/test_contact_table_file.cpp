@@ -273,6 +273,14 @@ TEST(ContactTableFile, BadFilesAreNamedErrors) {
     const std::string e = error_of("x.csv", t);
     EXPECT_NE(e.find("(rows run slot by slot, i by i, j by j)"), std::string::npos) << e;
   }
+  // A grid too large to allocate is refused before reading the rows.
+  {
+    std::string t = std::regex_replace(good, std::regex("\ntable_lateral_step_m,[^\n]*"),
+                                       "\ntable_lateral_step_m,2e-5");
+    t = std::regex_replace(t, std::regex("\ntable_roll_step_rad,[^\n]*"), "\ntable_roll_step_rad,4e-5");
+    const std::string e = error_of("x.csv", t);
+    EXPECT_NE(e.find("expected at most 2000000 nodes over all slots"), std::string::npos) << e;
+  }
   // A missing file and a bad scene r0.
   EXPECT_EQ(error_of("y.csv", good), "no error");
   try {

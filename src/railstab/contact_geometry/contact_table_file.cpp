@@ -77,6 +77,8 @@ const std::vector<NumberKey>& number_keys() {
   return keys;
 }
 
+constexpr size_t kMostContactTableNodes = 2000000;
+
 constexpr const char* kGridKeys[4] = {"table_lateral_half_range_m", "table_lateral_step_m",
                                       "table_roll_half_range_rad", "table_roll_step_rad"};
 
@@ -290,6 +292,13 @@ std::shared_ptr<const ProfileContactGeometry> read_contact_table_file(const std:
   const int nq = 2 * int(std::lround(o.lateral_half_range_m / o.lateral_step_m)) + 1;
   const int nt = 2 * int(std::lround(o.roll_half_range_rad / o.roll_step_rad)) + 1;
   const size_t nodes = size_t(nq) * size_t(nt);
+  // A bound before allocating: the default grid has 2169 nodes per slot; a
+  // grid of more than 2e6 nodes over all slots (2 GB of text) is a mistake.
+  if (nodes * size_t(slots) > kMostContactTableNodes)
+    r.fail(lines[kGridKeys[0]], "keys table_* and slots: expected at most " +
+                                    std::to_string(kMostContactTableNodes) +
+                                    " nodes over all slots, got " + std::to_string(slots) +
+                                    " slots x " + std::to_string(nq) + " x " + std::to_string(nt));
   ContactTable::NodeData data(static_cast<size_t>(slots));
   for (auto& quantities : data)
     for (auto& v : quantities) v.resize(nodes);
