@@ -34,6 +34,15 @@ std::vector<std::string> tokens(const std::string& line) {
   return out;
 }
 
+// Up to 40 characters of a field for a message, bytes that are not
+// printable ASCII shown as '?' (a binary file read by mistake).
+std::string shown(const std::string& text) {
+  std::string out = text.substr(0, 40);
+  for (char& c : out)
+    if (c < 0x20 || c > 0x7e) c = '?';
+  return out + (text.size() > 40 ? "..." : "");
+}
+
 bool blank(const std::string& line) { return line.find_first_not_of(" \t\r") == std::string::npos; }
 
 // Linear interpolation of column `c` of rows sorted by column 0.
@@ -129,14 +138,14 @@ RsgeoTable read_rsgeo_table(const std::string& path) {
       if (r.ec != std::errc() || r.ptr != s.data() + s.size() || !std::isfinite(v))
         throw ContactTableFileError(where(path, number) + ": column " + std::to_string(c + 1) +
                                     " (" + kColumnNames[c] + "): expected a finite number, got '" +
-                                    f[size_t(c)] + "'");
+                                    shown(f[size_t(c)]) + "'");
       row[size_t(c)] = v;
     }
     auto require = [&](RsgeoColumn c, bool ok, const std::string& expected) {
       if (!ok)
         throw ContactTableFileError(where(path, number) + ": column " +
                                     std::to_string(int(c) + 1) + " (" + kColumnNames[int(c)] +
-                                    "): expected " + expected + ", got " + f[size_t(int(c))]);
+                                    "): expected " + expected + ", got " + shown(f[size_t(int(c))]));
     };
     require(RsgeoColumn::y_m, std::abs(row[0]) <= 0.05, "|y| <= 0.05 m");
     if (!t.rows.empty())

@@ -89,6 +89,15 @@ std::string trimmed(std::string_view t) {
   return std::string(t.substr(first, last - first + 1));
 }
 
+// Up to 60 characters of a line for a message, bytes that are not
+// printable ASCII shown as '?' (a binary file read by mistake).
+std::string shown(const std::string& text) {
+  std::string out = text.substr(0, 60);
+  for (char& c : out)
+    if (c < 0x20 || c > 0x7e) c = '?';
+  return out + (text.size() > 60 ? "..." : "");
+}
+
 std::vector<std::string> split(const std::string& line) {
   std::vector<std::string> out;
   std::string field;
@@ -108,13 +117,13 @@ class Reader {
     double v = 0.0;
     const auto r = std::from_chars(text.data(), text.data() + text.size(), v);
     if (text.empty() || r.ec != std::errc() || r.ptr != text.data() + text.size() || !std::isfinite(v))
-      fail(line, where + ": expected a finite number, got '" + text + "'");
+      fail(line, where + ": expected a finite number, got '" + shown(text) + "'");
     return v;
   }
   int whole(int line, const std::string& where, const std::string& text) const {
     const double v = number(line, where, text);
     if (!(v >= 0 && v <= 1e6 && v == std::floor(v)))
-      fail(line, where + ": expected a whole number >= 0, got '" + text + "'");
+      fail(line, where + ": expected a whole number >= 0, got '" + shown(text) + "'");
     return int(v);
   }
   const std::string& path() const { return path_; }
@@ -201,14 +210,14 @@ std::shared_ptr<const ProfileContactGeometry> read_contact_table_file(const std:
     if (!header_seen) {
       if (t != "key,value")
         r.fail(number, "expected the first line 'key,value' (a contact table written by railstab "
-                       "contact-geometry), got '" + t.substr(0, 60) + "'");
+                       "contact-geometry), got '" + shown(t) + "'");
       header_seen = true;
       continue;
     }
     if (!format_seen) {
       if (key != "format" || value != kContactTableFormatTag)
         r.fail(number, "expected the line 'format," + std::string(kContactTableFormatTag) +
-                           "' after 'key,value', got '" + t.substr(0, 60) + "'");
+                           "' after 'key,value', got '" + shown(t) + "'");
       format_seen = true;
       continue;
     }
@@ -216,7 +225,7 @@ std::shared_ptr<const ProfileContactGeometry> read_contact_table_file(const std:
       if (t != column_header())
         r.fail(number, "expected the column header '" + column_header().substr(0, 60) +
                            "...' (slot, i, j and four columns per quantity), got '" +
-                           t.substr(0, 80) + "'");
+                           shown(t) + "'");
       columns_seen = true;
       break;
     }
@@ -225,8 +234,8 @@ std::shared_ptr<const ProfileContactGeometry> read_contact_table_file(const std:
     for (const NumberKey& k : number_keys()) known = known || key == k.key;
     for (const char* k : kGridKeys) known = known || key == k;
     if (!known)
-      r.fail(number, "key '" + key + "': expected one of the table's keys (docs/contact_tables.md)");
-    if (values.count(key)) r.fail(number, "key '" + key + "' appears twice; expected it once");
+      r.fail(number, "key '" + shown(key) + "': expected one of the table's keys (docs/contact_tables.md)");
+    if (values.count(key)) r.fail(number, "key '" + shown(key) + "' appears twice; expected it once");
     values[key] = value;
     lines[key] = number;
   }
@@ -341,7 +350,7 @@ std::shared_ptr<const ProfileContactGeometry> read_contact_table_file(const std:
     const std::string t = trimmed(line);
     if (!t.empty() && t[0] != '#')
       r.fail(number, "expected the end of the file after the last node row, got '" +
-                         t.substr(0, 60) + "'");
+                         shown(t) + "'");
   }
   g->table = ContactTable::from_nodes(o, nominal_lateral, std::move(borders), std::move(data));
   return g;
