@@ -137,3 +137,47 @@ TEST(CliContactGeometry, SetOverridesTheContactsValues) {
   EXPECT_FALSE(fs::exists(dir / "c"));
   fs::remove_all(dir);
 }
+
+// contact-geometry writes the contact table; a contact file with geometry =
+// "table" naming it is reported from the table (the conicity at 3 mm within
+// 1 % of the profiles'); a table that is not there is an error naming the
+// scene, the key and the file; nothing is written then.
+TEST(CliContactGeometry, WritesTheContactTableAndReadsItBack) {
+  const fs::path dir = fresh_dir("table");
+  const std::string cases = RAILSTAB_CASES_DIR;
+  const auto written = run_railstab(
+      {"contact-geometry", cases + "/s1002_uic60_contact.toml", "--no-plots", "--out", "a"}, dir);
+  ASSERT_EQ(written.exit_code, 0) << written.output;
+  const fs::path table = dir / "a/s1002_uic60_contact_s1002_uic60_contact_table.csv";
+  ASSERT_TRUE(fs::exists(table)) << written.output;
+  EXPECT_NE(written.output.find("wrote " + std::string("a/s1002_uic60_contact_s1002_uic60_contact_table.csv")),
+            std::string::npos)
+      << written.output;
+  std::ofstream(dir / "table_contact.toml")
+      << "[contacts.s1002_table]\ngeometry = \"table\"\ncontact_table = \"" << table.string()
+      << "\"\nnominal_rolling_radius_m = 0.46\nnormal = \"hertz\"\ntangential = \"kalker_hertz\"\n";
+  const auto back =
+      run_railstab({"contact-geometry", "table_contact.toml", "--out", "b"}, dir);
+  ASSERT_EQ(back.exit_code, 0) << back.output;
+  auto conicity = [](const std::string& line) { return std::stod(line.substr(line.find(':') + 1)); };
+  ASSERT_FALSE(conicity_line(back.output).empty()) << back.output;
+  EXPECT_NEAR(conicity(conicity_line(back.output)), conicity(conicity_line(written.output)),
+              0.01 * conicity(conicity_line(written.output)))
+      << back.output;
+  EXPECT_TRUE(fs::exists(dir / "b/table_contact_s1002_table_characteristic.csv"));
+  EXPECT_TRUE(fs::exists(dir / "b/table_contact_s1002_table.json"));
+  EXPECT_FALSE(fs::exists(dir / "b/table_contact_s1002_table_contact_table.csv"));
+
+  std::ofstream(dir / "missing.toml")
+      << "[contacts.s1002_table]\ngeometry = \"table\"\ncontact_table = \"nowhere.csv\"\n"
+         "nominal_rolling_radius_m = 0.46\nnormal = \"hertz\"\ntangential = \"kalker_hertz\"\n";
+  const auto missing = run_railstab({"contact-geometry", "missing.toml", "--out", "c"}, dir);
+  EXPECT_NE(missing.exit_code, 0);
+  EXPECT_NE(missing.output.find("missing.toml: contacts.s1002_table.contact_table: "),
+            std::string::npos)
+      << missing.output;
+  EXPECT_NE(missing.output.find("nowhere.csv: contact table file not found"), std::string::npos)
+      << missing.output;
+  EXPECT_FALSE(fs::exists(dir / "c"));
+  fs::remove_all(dir);
+}

@@ -270,7 +270,7 @@ void check_wheel_load_ratio(const AxleLoad& a, const ModelCheckLimits& L, ModelC
 // no vehicle.
 void check_lateral_shift(const Model& model, int b, double y_m, ModelCheckReport& r) {
   const ContactSpec& c = model.contacts[size_t(model.bodies[size_t(b)].wheelset()->contact)].spec;
-  if (c.geometry == ContactGeometryKind::profiles || !(c.flange_clearance_m > 0.0)) return;
+  if (uses_contact_table(c.geometry) || !(c.flange_clearance_m > 0.0)) return;
   if (std::abs(y_m) <= c.flange_clearance_m) return;
   std::ostringstream msg;
   msg << model.bodies[size_t(b)].name << ": steady lateral shift " << y_m * 1e3

@@ -18,11 +18,19 @@ std::vector<ModelWarning> check_run(const Model& model, const Trajectory& trajec
     if (!body.wheelset()) continue;
     const int k = body.state_index[int(CoordinateIndex::y)];
     const ContactSpec& contact = model.contacts[size_t(body.wheelset()->contact)].spec;
-    if (k < 0 || contact.geometry != ContactGeometryKind::profiles || !contact.profile_geometry)
-      continue;
-    const FlangeContact flange = find_flange_contact(contact.profile_geometry->pair);
-    if (!flange.found) continue;
-    const double y_f = flange.lateral_shift_m;
+    if (k < 0 || !uses_contact_table(contact.geometry) || !contact.profile_geometry) continue;
+    // A table read from a file states its flange contact shift (its pair has
+    // no profiles to find it from).
+    const ProfileContactGeometry& g = *contact.profile_geometry;
+    double y_f = 0.0;
+    if (g.has_profiles()) {
+      const FlangeContact flange = find_flange_contact(g.pair);
+      if (!flange.found) continue;
+      y_f = flange.lateral_shift_m;
+    } else {
+      if (!g.flange_contact_shift_m) continue;
+      y_f = *g.flange_contact_shift_m;
+    }
     bool beyond = true;
     for (size_t i = 0; i < t.size() && beyond; ++i)
       if (t[i] >= from_s) beyond = std::abs(trajectory.states[i](k)) >= y_f;

@@ -16,16 +16,32 @@ namespace railstab {
 enum class ContactGeometryKind {
   knife_edge_cone,  // thesis 5.2-5.7: conical wheel on a wire rail
   linear_conicity,  // textbook: r = r0 +/- lambda y, normal along the track normal
-  profiles          // measured or design wheel and rail profiles (contact tables)
+  profiles,         // measured or design wheel and rail profiles (contact tables)
+  table             // a precomputed contact table read from a file (contact_table_file.hpp)
 };
 // `geometry` in scene files and reports.
-inline constexpr NameTable<ContactGeometryKind, 3> kContactGeometryNames = {{
+inline constexpr NameTable<ContactGeometryKind, 4> kContactGeometryNames = {{
     {"knife_edge_cone", ContactGeometryKind::knife_edge_cone},
     {"linear_conicity", ContactGeometryKind::linear_conicity},
-    {"profiles", ContactGeometryKind::profiles}}};
+    {"profiles", ContactGeometryKind::profiles},
+    {"table", ContactGeometryKind::table}}};
 constexpr std::string_view contact_geometry_name(ContactGeometryKind kind) {
   return name_in(kContactGeometryNames, kind);
 }
+// The geometries evaluated through a contact table (ProfileContactGeometry:
+// built from profiles, or read from a file); the same model code, branch for
+// branch, serves both.
+constexpr bool uses_contact_table(ContactGeometryKind kind) {
+  return kind == ContactGeometryKind::profiles || kind == ContactGeometryKind::table;
+}
+
+// geometry = "table": the file's format (`contact_table_format`).
+enum class ContactTableFormat {
+  railstab,  // written by `railstab contact-geometry` (<stem>_contact_table.csv)
+  rsgeo      // DYTSI's RSGEO rigid-contact table over the wheelset's lateral shift
+};
+inline constexpr NameTable<ContactTableFormat, 2> kContactTableFormatNames = {{
+    {"railstab", ContactTableFormat::railstab}, {"rsgeo", ContactTableFormat::rsgeo}}};
 
 enum class NormalForceKind { hertz, prescribed };
 // `normal` in scene files and reports.
@@ -46,8 +62,8 @@ inline constexpr NameTable<TangentialForceKind, 3> kTangentialForceNames = {{
     {"constant", TangentialForceKind::constant},
     {"none", TangentialForceKind::none}}};
 
-// geometry = "profiles": the placed pair and its contact table, built once by
-// the set-up step (setup/contact_tables.hpp,
+// geometry = "profiles" (or "table"): the placed pair and its contact table,
+// built (or read) once by the set-up step (setup/contact_tables.hpp,
 // contact_geometry/profile_contact_geometry.hpp) and shared, immutable, by
 // every model built from the scene.
 struct ProfileContactGeometry;
@@ -90,8 +106,13 @@ struct ContactSpec {
   // scene_reading/creep_law_reader.hpp).
   CreepLawSpec creep_law = LinearKalkerCreep<double>{};
   // geometry = profiles: the files and options as read; the geometry is null
-  // until the set-up step has built it (and for other geometries).
+  // until the set-up step has built (geometry = table: read) it, and for the
+  // flangeless geometries.
   ProfileSourceSpec profile_source;
+  // geometry = table: the file (resolved against the scene's folder) and its
+  // format; an RSGEO table is resampled on profile_source.table's grid.
+  std::string contact_table_path;
+  ContactTableFormat contact_table_format = ContactTableFormat::railstab;
   std::shared_ptr<const ProfileContactGeometry> profile_geometry;
 };
 

@@ -11,6 +11,7 @@
 // here, never from `spec`, whose copies of them are the scene's values.
 #include <railstab/contact/hertz.hpp>
 #include <railstab/contact/contact_spec.hpp>
+#include <railstab/contact_geometry/profile_contact_geometry.hpp>
 
 #include <variant>
 
@@ -61,8 +62,10 @@ using ModelContact = ModelContactTpl<double>;
 // is not modelled), the contact table's lateral half range for profiles
 // (beyond it the wheel has climbed off its rail).
 inline double lateral_validity_limit_m(const ContactSpec& spec) {
-  return spec.geometry == ContactGeometryKind::profiles ? spec.profile_source.table.lateral_half_range_m
-                                                        : spec.flange_clearance_m;
+  if (spec.geometry == ContactGeometryKind::table && spec.profile_geometry)
+    return spec.profile_geometry->table.options().lateral_half_range_m;  // the file's grid
+  return uses_contact_table(spec.geometry) ? spec.profile_source.table.lateral_half_range_m
+                                           : spec.flange_clearance_m;
 }
 
 // The model's contact from the scene's description.

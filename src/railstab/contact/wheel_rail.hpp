@@ -22,7 +22,8 @@
 // linear_conicity: rolling radius r0 + side*lambda*y, contact point
 // (0, side*e0, -r) in I, normal along the track normal, no gravitational
 // stiffness; delta = depth of that point below the track plane.
-// profiles: the contact table of the profile pair (contact_geometry/
+// profiles (and table, the same read from a file): the contact table of
+// the profile pair (contact_geometry/
 // contact_tables.hpp) gives, per slot (tread, flange, ...; each its own
 // contact), the vertical gap g, the contact angle gamma in the rail frame,
 // the wheel profile coordinate u, the rolling radius r and the Hertz
@@ -244,7 +245,7 @@ WheelContact<T> contact_point_forces(const ModelContactTpl<S>& contact, const Bo
                            spec.tangential == TangentialForceKind::kalker_hertz;
   HertzShape<T> shape{};
   if (needs_hertz) {
-    const T B = spec.geometry == ContactGeometryKind::profiles
+    const T B = uses_contact_table(spec.geometry)
                     ? creep_detail::smooth_max(g.B_per_m, T(kMinimumTransverseCurvature_per_m),
                                                kTransverseCurvatureFloorWidth_per_m)
                     : g.B_per_m;
@@ -298,7 +299,7 @@ WheelContact<T> contact_point_forces(const ModelContactTpl<S>& contact, const Bo
     const T cube_root_N = pow(out.normal_force_N, 1.0 / 3.0);
     out.semi_axis_a_m = shape.semi_axis_a_per_force_13 * cube_root_N;
     out.semi_axis_b_m = shape.semi_axis_b_per_force_13 * cube_root_N;
-    if (spec.geometry == ContactGeometryKind::profiles) {
+    if (uses_contact_table(spec.geometry)) {
       // Kalker's coefficients at a/b inside table B.1, the same area ab.
       using std::sqrt;
       const T ab = out.semi_axis_a_m * out.semi_axis_b_m;
@@ -338,7 +339,7 @@ WheelContact<T> contact_point_forces(const ModelContactTpl<S>& contact, const Bo
 // Contact points a wheel of this contact has: 1 for the flangeless
 // geometries, the table's slots for profiles.
 template <class S> int contact_points_per_wheel(const ModelContactTpl<S>& contact) {
-  return contact.spec.geometry == ContactGeometryKind::profiles
+  return uses_contact_table(contact.spec.geometry)
              ? contact.spec.profile_geometry->table.slots()
              : 1;
 }
@@ -347,7 +348,7 @@ template <class S> int contact_points_per_wheel(const ModelContactTpl<S>& contac
 // centre is at height z_m (profiles: over the table's slots; > 0: the wheel
 // floats). The flangeless geometries touch at z = r0: r0 - z_m.
 inline double centred_wheel_gap_m(const ModelContact& contact, double z_m) {
-  if (contact.spec.geometry != ContactGeometryKind::profiles)
+  if (!uses_contact_table(contact.spec.geometry))
     return z_m - contact.spec.nominal_rolling_radius_m;
   const ProfileContactGeometry& pg = *contact.spec.profile_geometry;
   const WheelPoseOf<double> pose = wheel_pose_in_rail_frame<double>(pg.pair, +1, 0.0, z_m, 0.0);
@@ -369,6 +370,7 @@ WheelContact<T> evaluate_wheel_contact(const ModelContactTpl<S>& contact, const 
       g = wheel_rail_detail::linear_conicity_geometry(contact, ws, side);
       break;
     case ContactGeometryKind::profiles:
+    case ContactGeometryKind::table:
       g = wheel_rail_detail::profile_slot_geometry(contact, ws, side, slot);
       break;
   }

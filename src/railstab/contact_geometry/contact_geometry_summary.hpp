@@ -5,6 +5,7 @@
 // contact shift, and the contact tables' slot borders.
 #include <railstab/contact_geometry/characteristic_functions.hpp>
 #include <railstab/contact_geometry/equivalent_conicity.hpp>
+#include <railstab/contact_geometry/table_rigid_contact.hpp>
 
 namespace railstab {
 
@@ -32,5 +33,20 @@ struct ContactGeometrySummary {
 
 ContactGeometrySummary summarise_contact_geometry(const ProfilePair& pair,
                                                   const ContactGeometrySummaryOptions& o = {});
+
+// The same from a contact table alone (geometry = "table"; no profiles):
+// the rigid contact on the table (table_rigid_contact.hpp) over the lateral
+// shifts the table covers (rows stop where a wheel would leave it), the
+// conicity at the amplitudes whose motion stays inside them, the flange
+// contact shift the table file states.
+struct TableContactGeometrySummary {
+  std::vector<TableRigidRow> rows;
+  std::vector<ConicityPoint> conicity;
+  double equivalent_conicity_at_3mm = 0;  // NaN if the motion at 3 mm leaves the rows
+  double half_contact_distance_m = 0;
+  double lateral_reach_m = 0;  // the rows cover -reach..+reach (at most lateral_range_m)
+};
+TableContactGeometrySummary summarise_table_contact_geometry(
+    const ProfileContactGeometry& geometry, const ContactGeometrySummaryOptions& o = {});
 
 }  // namespace railstab

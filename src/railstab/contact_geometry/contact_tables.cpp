@@ -85,33 +85,53 @@ void check_table_grid(const ContactTableOptions& o, const char* who) {
 
 }  // namespace
 
-ContactTable make_contact_table(const ProfilePair& pair, const ContactTableOptions& o) {
-  check_table_grid(o, "make_contact_table");
-  ContactTable t;
+void ContactTable::set_grid(ContactTable& t, const ContactTableOptions& o, const char* who) {
+  check_table_grid(o, who);
   t.options_ = o;
-  t.nominal_lateral_m_ = pair.nominal_wheel_lateral_m();
-  t.borders_m_ = contact_jump_borders(pair, o.lateral_half_range_m);
-  const int slots = int(t.borders_m_.size()) + 1;
   t.nq_ = 2 * int(std::lround(o.lateral_half_range_m / o.lateral_step_m)) + 1;
   t.nt_ = 2 * int(std::lround(o.roll_half_range_rad / o.roll_step_rad)) + 1;
   t.dq_ = 2 * o.lateral_half_range_m / (t.nq_ - 1);
   t.dt_ = 2 * o.roll_half_range_rad / (t.nt_ - 1);
   t.q0_ = -o.lateral_half_range_m;
   t.t0_ = -o.roll_half_range_rad;
-  const size_t nodes = size_t(t.nq_) * size_t(t.nt_);
-  t.slot_data_.resize(size_t(slots));
-  for (auto& quantities : t.slot_data_)
-    for (auto& v : quantities) v.assign(nodes, ContactTable::Node{0, 0, 0, 0});
+}
 
-  for (int slot = 0; slot < slots; ++slot) {
-    auto& data = t.slot_data_[size_t(slot)];
-    for (int i = 0; i < t.nq_; ++i)
-      for (int j = 0; j < t.nt_; ++j) {
-        const WheelPose pose{t.nominal_lateral_m_ + t.lateral_at(i), 0.0, t.roll_at(j)};
-        const ContactPoint c = direct_slot_contact(pair, t, slot, pose);
-        for (int q = 0; q < kTableQuantities; ++q)
-          data[size_t(q)][size_t(i * t.nt_ + j)].f = quantity_of(c, TableQuantity(q));
-      }
+namespace {
+
+void check_slot_count(size_t slots, size_t borders, const char* who) {
+  if (slots == 0 || borders + 1 != slots)
+    throw std::invalid_argument(std::string(who) + ": expected one slot border fewer than the " +
+                                std::to_string(slots) + " slots, got " + std::to_string(borders));
+}
+
+void check_node_count(size_t got, size_t expected, const char* who) {
+  if (got != expected)
+    throw std::invalid_argument(std::string(who) + ": expected " + std::to_string(expected) +
+                                " nodes per slot and quantity (the grid's), got " +
+                                std::to_string(got));
+}
+
+}  // namespace
+
+ContactTable ContactTable::from_node_values(const ContactTableOptions& o, double nominal_lateral_m,
+                                            std::vector<double> borders_m,
+                                            const NodeValues& values) {
+  const char* who = "ContactTable::from_node_values";
+  ContactTable t;
+  set_grid(t, o, who);
+  check_slot_count(values.size(), borders_m.size(), who);
+  t.nominal_lateral_m_ = nominal_lateral_m;
+  t.borders_m_ = std::move(borders_m);
+  const size_t nodes = size_t(t.nq_) * size_t(t.nt_);
+  t.slot_data_.resize(values.size());
+  for (size_t slot = 0; slot < values.size(); ++slot) {
+    auto& data = t.slot_data_[slot];
+    for (int q = 0; q < kTableQuantities; ++q) {
+      const std::vector<double>& v = values[slot][size_t(q)];
+      check_node_count(v.size(), nodes, who);
+      data[size_t(q)].resize(nodes);
+      for (size_t k = 0; k < nodes; ++k) data[size_t(q)][k] = Node{v[k], 0, 0, 0};
+    }
     // Node derivatives by Akima's rule along the grid lines.
     std::vector<double> line;
     for (auto& n : data) {
@@ -137,19 +157,52 @@ ContactTable make_contact_table(const ProfilePair& pair, const ContactTableOptio
   return t;
 }
 
+ContactTable ContactTable::from_nodes(const ContactTableOptions& o, double nominal_lateral_m,
+                                      std::vector<double> borders_m, NodeData nodes) {
+  const char* who = "ContactTable::from_nodes";
+  ContactTable t;
+  set_grid(t, o, who);
+  check_slot_count(nodes.size(), borders_m.size(), who);
+  for (const auto& quantities : nodes)
+    for (const auto& v : quantities) check_node_count(v.size(), size_t(t.nq_) * size_t(t.nt_), who);
+  t.nominal_lateral_m_ = nominal_lateral_m;
+  t.borders_m_ = std::move(borders_m);
+  t.slot_data_ = std::move(nodes);
+  return t;
+}
+
+ContactTable make_contact_table(const ProfilePair& pair, const ContactTableOptions& o) {
+  check_table_grid(o, "make_contact_table");
+  // The slots' parts of the wheel and the grid, then the direct contact at
+  // every node.
+  std::vector<double> borders = contact_jump_borders(pair, o.lateral_half_range_m);
+  ContactTable grid;
+  ContactTable::set_grid(grid, o, "make_contact_table");
+  grid.nominal_lateral_m_ = pair.nominal_wheel_lateral_m();
+  grid.borders_m_ = borders;
+  const int slots = int(borders.size()) + 1;
+  grid.slot_data_.resize(size_t(slots));  // (slot_range counts the slots)
+  const size_t nodes = size_t(grid.nq_) * size_t(grid.nt_);
+  ContactTable::NodeValues values(static_cast<size_t>(slots));
+  for (auto& quantities : values)
+    for (auto& v : quantities) v.assign(nodes, 0.0);
+  for (int slot = 0; slot < slots; ++slot)
+    for (int i = 0; i < grid.nq_; ++i)
+      for (int j = 0; j < grid.nt_; ++j) {
+        const WheelPose pose{grid.nominal_lateral_m_ + grid.lateral_at(i), 0.0, grid.roll_at(j)};
+        const ContactPoint c = direct_slot_contact(pair, grid, slot, pose);
+        for (int q = 0; q < kTableQuantities; ++q)
+          values[size_t(slot)][size_t(q)][size_t(i * grid.nt_ + j)] = quantity_of(c, TableQuantity(q));
+      }
+  return ContactTable::from_node_values(o, grid.nominal_lateral_m_, std::move(borders), values);
+}
+
 ContactTable ContactTable::plane_table(const ContactTableOptions& o, double nominal_lateral_m,
                                        double q_c, double theta_c,
                                        const std::array<Plane, kTableQuantities>& planes) {
-  check_table_grid(o, "ContactTable::plane_table");
   ContactTable t;
-  t.options_ = o;
+  set_grid(t, o, "ContactTable::plane_table");
   t.nominal_lateral_m_ = nominal_lateral_m;
-  t.nq_ = 2 * int(std::lround(o.lateral_half_range_m / o.lateral_step_m)) + 1;
-  t.nt_ = 2 * int(std::lround(o.roll_half_range_rad / o.roll_step_rad)) + 1;
-  t.dq_ = 2 * o.lateral_half_range_m / (t.nq_ - 1);
-  t.dt_ = 2 * o.roll_half_range_rad / (t.nt_ - 1);
-  t.q0_ = -o.lateral_half_range_m;
-  t.t0_ = -o.roll_half_range_rad;
   t.slot_data_.resize(1);
   for (int q = 0; q < kTableQuantities; ++q) {
     const Plane& p = planes[size_t(q)];

@@ -131,11 +131,32 @@ class ContactTable {
                                   double q_c, double theta_c,
                                   const std::array<Plane, kTableQuantities>& planes);
 
- private:
-  friend ContactTable make_contact_table(const ProfilePair&, const ContactTableOptions&);
+  // A node: the value, d/dq, d/dtheta and d2/dq dtheta.
   struct Node {
     double f, fq, ft, fqt;
   };
+  // Node values [slot][quantity][i * roll_nodes + j] on `grid`.
+  using NodeValues = std::vector<std::array<std::vector<double>, kTableQuantities>>;
+  // A table from its node values alone: the node derivatives by Akima's
+  // rule, as make_contact_table (which builds its table this way). `borders_m`
+  // (decreasing, one fewer than the slots) only names the slots' parts of
+  // the wheel. Throws std::invalid_argument on sizes that do not fit the grid.
+  static ContactTable from_node_values(const ContactTableOptions& grid, double nominal_lateral_m,
+                                       std::vector<double> borders_m, const NodeValues& values);
+  // A table from complete nodes (values and derivatives), e.g. as written to
+  // a file (contact_table_file.hpp): evaluates bit for bit as the table they
+  // came from. Same size checks.
+  using NodeData = std::vector<std::array<std::vector<Node>, kTableQuantities>>;
+  static ContactTable from_nodes(const ContactTableOptions& grid, double nominal_lateral_m,
+                                 std::vector<double> borders_m, NodeData nodes);
+  const Node& node_data(int slot, TableQuantity q, int i, int j) const {
+    return slot_data_[size_t(slot)][size_t(int(q))][size_t(i * nt_ + j)];
+  }
+
+ private:
+  friend ContactTable make_contact_table(const ProfilePair&, const ContactTableOptions&);
+  // The grid of `o` (node counts, spacing, first nodes) set on `t`.
+  static void set_grid(ContactTable& t, const ContactTableOptions& o, const char* who);
   // The cell of a pose and the Hermite basis in it.
   template <class T> struct Cell {
     int i, j;

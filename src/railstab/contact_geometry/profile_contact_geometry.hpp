@@ -9,6 +9,7 @@
 
 #include <memory>
 #include <optional>
+#include <string>
 
 namespace railstab {
 
@@ -26,6 +27,15 @@ struct ProfileContactGeometry {
   // and the tape circle), the angle of Nadal's derailment limit
   //   Y/Q = (tan(beta) - mu) / (1 + mu tan(beta)).
   double flange_angle_rad = 0.0;
+  // Read from a table file (geometry = "table", contact_table_file.hpp): the
+  // file, and `pair` holds only the placement numbers (wheel and rail
+  // offsets, top of rail, r0; no profiles). Empty: built from profiles.
+  std::string table_source;
+  bool has_profiles() const { return table_source.empty(); }
+  // The wheelset's lateral shift at which the rigid contact jumps onto the
+  // flange (find_flange_contact), as the table file states it; for a
+  // geometry built from profiles it is computed from them when needed.
+  std::optional<double> flange_contact_shift_m;
 };
 
 // Reads both profile files, places the pair with `nominal_rolling_radius_m`

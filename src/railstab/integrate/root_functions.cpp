@@ -11,10 +11,10 @@ RootFunctionSet::RootFunctionSet(const Model& model, double speed_m_per_s)
     const Body& body = model.bodies[size_t(b)];
     if (!body.wheelset()) continue;
     const int contact = body.wheelset()->contact;
-    // Profile contact has its flange: no validity limit to stop at, and its
-    // contact points come and go smoothly (Hertz, C1 at zero overlap; the
-    // table's slots) without events.
-    if (model.contacts[size_t(contact)].spec.geometry == ContactGeometryKind::profiles) continue;
+    // Profile (or table) contact has its flange: no validity limit to stop
+    // at, and its contact points come and go smoothly (Hertz, C1 at zero
+    // overlap; the table's slots) without events.
+    if (uses_contact_table(model.contacts[size_t(contact)].spec.geometry)) continue;
     const int k = body.state_index[int(CoordinateIndex::y)];
     if (k >= 0) {
       RootFunction f;

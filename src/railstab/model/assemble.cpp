@@ -52,10 +52,11 @@ Model assemble_model(const SceneSpec& scene, const std::vector<Eigen::Vector3d>&
 
   for (const ContactSpec& c : scene.contacts) {
     // The set-up step builds profile contact tables (setup/contact_tables.hpp).
-    if (c.geometry == ContactGeometryKind::profiles && !c.profile_geometry)
-      throw std::invalid_argument("assemble_model: contacts." + c.name +
-                                  ": geometry = \"profiles\" without its contact table (build_model "
-                                  "or build_contact_tables builds it)");
+    if (uses_contact_table(c.geometry) && !c.profile_geometry)
+      throw std::invalid_argument("assemble_model: contacts." + c.name + ": geometry = \"" +
+                                  std::string(contact_geometry_name(c.geometry)) +
+                                  "\" without its contact table (build_model or "
+                                  "build_contact_tables builds or reads it)");
     model.contacts.push_back(make_model_contact(c));
   }
 

@@ -49,7 +49,7 @@ std::vector<WheelForces> wheel_forces(const Model& model, double speed_m_per_s, 
     w.side = side;
     const ModelContact& contact =
         model.contacts[size_t(model.bodies[size_t(body)].wheelset()->contact)];
-    if (contact.spec.geometry == ContactGeometryKind::profiles && contact.spec.profile_geometry) {
+    if (uses_contact_table(contact.spec.geometry) && contact.spec.profile_geometry) {
       w.flange_angle_rad = contact.spec.profile_geometry->flange_angle_rad;
       w.nadal_friction_coefficient =
           friction_coefficient_of(contact.creep_law).value_or(kNadalDefaultFrictionCoefficient);

@@ -8,7 +8,7 @@ namespace railstab {
 
 bool has_profile_contact(const Model& model) {
   for (const ModelContact& c : model.contacts)
-    if (c.spec.geometry == ContactGeometryKind::profiles) return true;
+    if (uses_contact_table(c.spec.geometry)) return true;
   return false;
 }
 

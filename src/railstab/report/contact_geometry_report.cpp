@@ -201,4 +201,60 @@ void write_contact_geometry_report(const ProfilePair& pair, const ContactGeometr
   run_gnuplot(script, outputs.staging_dir(), pngs);
 }
 
+void write_table_contact_geometry_report(const ProfileContactGeometry& g,
+                                         const TableContactGeometrySummary& s,
+                                         const std::string& scene_file,
+                                         const std::string& contact_name, OutputSet& outputs,
+                                         const std::string& stem) {
+  outputs.write(stem + "_characteristic.csv", [&](std::ostream& out) {
+    out << std::setprecision(10);
+    out << "y_m,delta_r_m,roll_rad,contact_angle_left_rad,contact_angle_right_rad,"
+           "rolling_radius_left_m,rolling_radius_right_m,contact_y_rail_left_m,"
+           "contact_y_rail_right_m,contact_u_wheel_left_m,contact_u_wheel_right_m,slot_left,"
+           "slot_right\n";
+    Csv c{out};
+    for (const TableRigidRow& r : s.rows) {
+      c << r.lateral_m << r.delta_r_m() << r.roll_rad << r.left.contact_angle_rad
+        << r.right.contact_angle_rad << r.left.rolling_radius_m << r.right.rolling_radius_m
+        << r.left.rail_y_m << r.right.rail_y_m << r.left.wheel_u_m << r.right.wheel_u_m
+        << double(r.left.slot) << double(r.right.slot);
+      c.end();
+    }
+  });
+  outputs.write(stem + "_conicity.csv", [&](std::ostream& out) {
+    out << std::setprecision(10) << "amplitude_m,wavelength_m,equivalent_conicity\n";
+    Csv c{out};
+    for (const ConicityPoint& p : s.conicity) {
+      c << p.amplitude_m << p.wavelength_m << p.equivalent_conicity;
+      c.end();
+    }
+  });
+  outputs.write(stem + ".json", [&](std::ostream& out) {
+    JsonWriter j(out);
+    j.begin_object()
+        .field("scene_file", scene_file)
+        .field("contact", contact_name)
+        .field("contact_table", g.table_source)
+        .field("nominal_rolling_radius_m", g.pair.parameters.nominal_rolling_radius_m)
+        .field("half_contact_distance_m", s.half_contact_distance_m)
+        .field("lateral_reach_m", s.lateral_reach_m)
+        .field("method", "EN 15302: integration of the Klingel motion y'' = -delta_r(y)/(2 e0 r0) "
+                         "over the rigid-contact delta_r function evaluated on the contact table "
+                         "(yaw neglected); tan(gamma_e) = r0 e0 (2 pi / lambda)^2")
+        .field("reference_amplitude_m", kConicityReferenceAmplitude_m);
+    if (std::isfinite(s.equivalent_conicity_at_3mm))
+      j.field("equivalent_conicity_at_reference_amplitude", s.equivalent_conicity_at_3mm);
+    j.field("flange_contact_found", g.flange_contact_shift_m.has_value());
+    if (g.flange_contact_shift_m) j.field("flange_contact_shift_m", *g.flange_contact_shift_m);
+    j.key("equivalent_conicity").begin_array();
+    for (const ConicityPoint& c : s.conicity)
+      j.begin_object()
+          .field("amplitude_m", c.amplitude_m)
+          .field("wavelength_m", c.wavelength_m)
+          .field("equivalent_conicity", c.equivalent_conicity)
+          .end_object();
+    j.end_array().end_object();
+  });
+}
+
 }  // namespace railstab

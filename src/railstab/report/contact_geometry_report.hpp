@@ -24,4 +24,16 @@ void write_contact_geometry_report(const ProfilePair& pair, const ContactGeometr
                                    const std::string& contact_name, OutputSet& outputs,
                                    const std::string& stem, bool plots = true);
 
+// For a contact read from a table file (geometry = "table"; no profiles to
+// plot): <stem>_characteristic.csv (the table's rigid contact: y_m,
+// delta_r_m, roll_rad, per side contact angle, rolling radius, rail and
+// wheel contact positions and slot) and <stem>_conicity.csv, and
+// <stem>.json (the table file, e0, r0, the conicity at 3 mm where the rows
+// reach, the flange contact shift the file states). No plots.
+void write_table_contact_geometry_report(const ProfileContactGeometry& geometry,
+                                         const TableContactGeometrySummary& summary,
+                                         const std::string& scene_file,
+                                         const std::string& contact_name, OutputSet& outputs,
+                                         const std::string& stem);
+
 }  // namespace railstab

@@ -36,7 +36,10 @@ std::string contact_description(const ModelContact& c) {
   std::ostringstream s;
   s.precision(6);
   s << spec.name << ": " << contact_geometry_name(spec.geometry);
-  if (spec.geometry == ContactGeometryKind::profiles && spec.profile_geometry)
+  if (uses_contact_table(spec.geometry) && spec.profile_geometry &&
+      !spec.profile_geometry->has_profiles())
+    s << " " << spec.profile_geometry->table_source;
+  else if (uses_contact_table(spec.geometry) && spec.profile_geometry)
     s << " " << spec.profile_geometry->pair.wheel.source << " on "
       << spec.profile_geometry->pair.rail.source;
   else if (spec.geometry == ContactGeometryKind::knife_edge_cone)

@@ -66,11 +66,16 @@ ContactSpec read_contact(const TableReader& contact, std::string name) {
   spec.creep_law = read_creep_law(contact, spec);
   if (spec.geometry == ContactGeometryKind::profiles) {
     read_profile_contact(contact, spec);
+  } else if (spec.geometry == ContactGeometryKind::table) {
+    read_table_contact(contact, spec);
   } else {
     for (std::string_view key : profile_keys())
       contact.reject_if_present(key, "no " + std::string(key) +
                                          " unless geometry = \"profiles\"");
   }
+  if (spec.geometry != ContactGeometryKind::table)
+    for (std::string_view key : table_file_keys())
+      contact.reject_if_present(key, "no " + std::string(key) + " unless geometry = \"table\"");
   return spec;
 }
 
@@ -94,6 +99,7 @@ std::vector<ContactSpec> read_contacts(const TableReader& top) {
         "normal_damping_N_s_per_m"};
     keys.insert(keys.end(), creep_law_keys().begin(), creep_law_keys().end());
     keys.insert(keys.end(), profile_keys().begin(), profile_keys().end());
+    keys.insert(keys.end(), table_file_keys().begin(), table_file_keys().end());
     const TableReader contact(*node.as_table(), path, top.source(), std::move(keys));
     contacts.push_back(read_contact(contact, std::string(name.str())));
   }

@@ -55,7 +55,13 @@ ProfileSourceSpec read_profile_source(const TableReader& contact) {
   p.rail_inclination_rad = contact.number_or("rail_inclination_rad", "rad", p.rail_inclination_rad);
   p.tape_circle_from_flange_back_m =
       contact.number_or("tape_circle_from_flange_back_m", "m", p.tape_circle_from_flange_back_m);
-  ContactTableOptions& t = s.table;
+  read_table_grid(contact, s.table);
+  return s;
+}
+
+}  // namespace
+
+void read_table_grid(const TableReader& contact, ContactTableOptions& t) {
   auto in_range = [&](std::string_view key, std::string_view unit, double fallback, double lo,
                       double hi) {
     const double v = contact.number_or(key, unit, fallback);
@@ -69,10 +75,7 @@ ProfileSourceSpec read_profile_source(const TableReader& contact) {
   t.lateral_step_m = in_range("table_lateral_step_m", "m", t.lateral_step_m, 2e-5, 1e-3);
   t.roll_half_range_rad = in_range("table_roll_half_range_rad", "rad", t.roll_half_range_rad, 0.002, 0.1);
   t.roll_step_rad = in_range("table_roll_step_rad", "rad", t.roll_step_rad, 1e-4, 0.02);
-  return s;
 }
-
-}  // namespace
 
 // geometry = "profiles": the keys of the profile files, their placement and
 // the contact table's grid (contact_geometry/profile_contact_geometry.hpp).
@@ -94,6 +97,40 @@ void read_profile_contact(const TableReader& contact, ContactSpec& spec) {
                            "from the penetration at each contact point)",
                  "another normal force model");
   spec.profile_source = read_profile_source(contact);
+}
+
+const std::vector<std::string_view>& table_file_keys() {
+  static const std::vector<std::string_view> keys = {"contact_table", "contact_table_format"};
+  return keys;
+}
+
+void read_table_contact(const TableReader& contact, ContactSpec& spec) {
+  static const Choices<ContactTableFormat> formats = choices_of(kContactTableFormatNames);
+  for (std::string_view key : kFlangelessKeys)
+    contact.reject_if_present(key, "no " + std::string(key) +
+                                       " with geometry = \"table\" (the table defines it)");
+  if (spec.normal != NormalForceKind::hertz)
+    contact.fail("normal", "\"hertz\" with geometry = \"table\" (the normal force follows "
+                           "from the penetration at each contact point)",
+                 "another normal force model");
+  if (!contact.has("contact_table"))
+    contact.fail_missing("contact_table", "the path of a contact table file (relative to the "
+                                          "scene), required when geometry = \"table\"");
+  spec.contact_table_path = path_relative_to_file(contact.source(), contact.text("contact_table"));
+  spec.contact_table_format =
+      contact.choice_or("contact_table_format", formats, ContactTableFormat::railstab);
+  const bool rsgeo = spec.contact_table_format == ContactTableFormat::rsgeo;
+  // The profiles and their placement are the table's; an RSGEO table is
+  // resampled on the grid keys, railstab's own table has its grid.
+  for (std::string_view key : profile_keys()) {
+    const bool grid_key = key.substr(0, 6) == "table_";
+    if (grid_key && rsgeo) continue;
+    contact.reject_if_present(key, "no " + std::string(key) + " with geometry = \"table\"" +
+                                       (grid_key ? " and contact_table_format = \"railstab\" "
+                                                   "(the file has its grid)"
+                                                 : " (the table file holds the placement)"));
+  }
+  if (rsgeo) read_table_grid(contact, spec.profile_source.table);
 }
 
 }  // namespace railstab::scene_reading

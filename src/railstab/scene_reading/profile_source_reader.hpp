@@ -20,4 +20,14 @@ const std::vector<std::string_view>& profile_keys();
 // other than Hertz.
 void read_profile_contact(const TableReader& contact, ContactSpec& spec);
 
+// geometry = "table": the keys contact_table (the file, relative to the
+// scene) and contact_table_format ("railstab", default, or "rsgeo"); the
+// grid keys table_* only for an RSGEO table (resampled on that grid). The
+// same refusals as for profiles.
+const std::vector<std::string_view>& table_file_keys();
+void read_table_contact(const TableReader& contact, ContactSpec& spec);
+
+// The table_* grid keys of a profile (or RSGEO) contact into `grid`.
+void read_table_grid(const TableReader& contact, ContactTableOptions& grid);
+
 }  // namespace railstab::scene_reading

@@ -158,7 +158,7 @@ class SceneChecker {
       require_in(at("cone_angle_rad"), contact.cone_angle_rad, r::cone_angle_rad);
     if (contact.geometry == ContactGeometryKind::linear_conicity)
       require_in(at("conicity"), contact.conicity, r::conicity);
-    if (contact.geometry != ContactGeometryKind::profiles) {
+    if (!uses_contact_table(contact.geometry)) {
       require_in(at("half_contact_distance_m"), contact.half_contact_distance_m,
                  r::half_contact_distance_m);
       check_contact_distances(at("half_contact_distance_m"), contact.half_contact_distance_m);

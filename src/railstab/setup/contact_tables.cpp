@@ -1,16 +1,44 @@
 #include <railstab/setup/contact_tables.hpp>
 
+#include <railstab/contact_geometry/contact_table_file.hpp>
 #include <railstab/contact_geometry/profile_contact_geometry.hpp>
+#include <railstab/contact/rsgeo_table.hpp>
 #include <railstab/scene_reading/load_scene.hpp>
 
 #include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
 
 namespace railstab {
 
 namespace {
 bool lacks_table(const ContactSpec& contact) {
-  return contact.geometry == ContactGeometryKind::profiles && !contact.profile_geometry;
+  return uses_contact_table(contact.geometry) && !contact.profile_geometry;
 }
+
+// geometry = "table": the file in its format. The table's rolling radii and
+// the wheel's placement are for its r0, which must be the contact's (the
+// spin rate V / r0 and the pose use it).
+std::shared_ptr<const ProfileContactGeometry> read_table_geometry(const ContactSpec& contact,
+                                                                   const std::string& source) {
+  std::shared_ptr<const ProfileContactGeometry> g;
+  if (contact.contact_table_format == ContactTableFormat::rsgeo)
+    g = read_rsgeo_contact_geometry(contact.contact_table_path, contact.profile_source.table,
+                                    contact.nominal_rolling_radius_m);
+  else
+    g = read_contact_table_file(contact.contact_table_path);
+  const double r0 = g->pair.parameters.nominal_rolling_radius_m;
+  if (std::abs(r0 - contact.nominal_rolling_radius_m) > 1e-12) {
+    std::ostringstream msg;
+    msg << std::setprecision(17) << source << ": contacts." << contact.name
+        << ".nominal_rolling_radius_m: expected the contact table's nominal rolling radius " << r0
+        << " m (" << contact.contact_table_path << "), got " << contact.nominal_rolling_radius_m;
+    throw SceneError(msg.str());
+  }
+  return g;
+}
+
 }  // namespace
 
 void build_contact_tables(std::vector<ContactSpec>& contacts, const std::string& source) {
@@ -18,9 +46,14 @@ void build_contact_tables(std::vector<ContactSpec>& contacts, const std::string&
     if (!lacks_table(contact)) continue;
     try {
       contact.profile_geometry =
-          build_profile_contact_geometry(contact.profile_source, contact.nominal_rolling_radius_m);
+          contact.geometry == ContactGeometryKind::table
+              ? read_table_geometry(contact, source)
+              : build_profile_contact_geometry(contact.profile_source,
+                                               contact.nominal_rolling_radius_m);
     } catch (const ProfileError& e) {
       throw SceneError(source + ": contacts." + contact.name + ": " + e.what());
+    } catch (const ContactTableFileError& e) {
+      throw SceneError(source + ": contacts." + contact.name + ".contact_table: " + e.what());
     }
   }
 }

@@ -22,6 +22,12 @@ QuasiLinearModelBuilder::QuasiLinearModelBuilder(const Model& model,
     const WheelsetKind* w = model.bodies[b].wheelset();
     if (!w) continue;
     const ModelContact& c = model.contacts[size_t(w->contact)];
+    if (c.spec.geometry == ContactGeometryKind::table)
+      throw std::invalid_argument(
+          "contacts." + c.spec.name + ".geometry = \"table\": the quasi-linear critical speed "
+          "(--amplitude, --amplitudes) linearises the rigid contact of the wheel and rail "
+          "profiles, which a contact table file does not hold; run it on the scene with "
+          "geometry = \"profiles\" that the table was written from");
     if (c.spec.geometry != ContactGeometryKind::profiles) continue;
     // y_c: the wheelset's lateral coordinate in its track frame (0 when
     // frozen: the nominal position).

@@ -186,7 +186,7 @@ StabilityPoint SpeedStability::evaluate(double speed_m_per_s, bool sparse,
     const int k = b.state_index[int(CoordinateIndex::y)];
     if (!b.wheelset() || k < 0) continue;
     const ContactSpec& contact = model.contacts[b.wheelset()->contact].spec;
-    if (contact.geometry == ContactGeometryKind::profiles) {  // has its flange
+    if (uses_contact_table(contact.geometry)) {  // has its flange
       has_profiles = true;
       continue;
     }
