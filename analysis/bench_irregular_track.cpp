@@ -1,8 +1,10 @@
 // Cost of irregular track (issue 25's performance target: under 10 %): the
 // thesis vehicle with S1002/UIC60 profile contact at 80 m/s, 1 km of track,
-// from the scene's initial offsets, on perfect track and on ERRI B176 low
-// track (seed 1, 3-150 m, 1100 m from s = 0), measured in one run:
-//   - one right-hand side (median of batches) with and without;
+// from the scene's initial offsets, on perfect track, on ERRI B176 low
+// track (seed 1, 3-150 m, 1100 m from s = 0) and on the same spectrum at
+// amplitude 0 (the irregularities' machinery without their motion: the run
+// is the perfect track's step for step), measured in one run:
+//   - one right-hand side (median of batches): perfect, amplitude 0;
 //   - the whole run (the scene's integrator and tolerances): CPU seconds per
 //     simulated second, steps and Jacobians, medians of `repeats` runs;
 //   - synthesising the irregularities (building the track).
@@ -73,13 +75,16 @@ int main(int argc, char** argv) {
   irr.spectrum = IrregularitySpectrum::erri_b176_low;
   irr.length_m = 1100.0;
   irregular_spec.track.irregularities = irr;
+  SceneSpec zero_spec = irregular_spec;
+  zero_spec.track.irregularities->amplitude_scale = 0.0;
   const PreparedScene perfect = prepare_scene(perfect_spec);
   const double synth_start = bench::cpu_seconds();
   const PreparedScene irregular = prepare_scene(irregular_spec, true);
   const double build_s = bench::cpu_seconds() - synth_start;
+  const PreparedScene zero = prepare_scene(zero_spec, true);
 
   const Eigen::VectorXd x = perfect.equilibrium.state;
-  Workspace<double> ws_p(perfect.model), ws_i(irregular.model);
+  Workspace<double> ws_p(perfect.model), ws_i(zero.model);
   Eigen::VectorXd xdot;
   // A new time per call, so the track frames (and the irregularities) are
   // evaluated every time, as in a run.
@@ -90,20 +95,25 @@ int main(int argc, char** argv) {
   });
   const double rhs_i = bench::median_of_batches([&] {
     t_i += 1e-4;
-    evaluate_rhs<double>(irregular.model, ws_i, t_i, V, x, xdot);
+    evaluate_rhs<double>(zero.model, ws_i, t_i, V, x, xdot);
   });
   std::printf("thesis vehicle, S1002/UIC60, %.0f m/s, %.0f m, %d repeats (CPU time, medians)\n", V, distance_m,
               repeats);
-  std::printf("right-hand side: perfect %.2f us, irregular %.2f us, ratio %.3f\n", rhs_p * 1e6, rhs_i * 1e6,
-              rhs_i / rhs_p);
+  std::printf("right-hand side at the same state: perfect %.2f us, amplitude 0 %.2f us, ratio %.3f\n", rhs_p * 1e6,
+              rhs_i * 1e6, rhs_i / rhs_p);
   std::printf("prepare_scene with the irregularities (synthesis, table, equilibrium): %.2f s CPU\n", build_s);
   const RunFigures a = run(perfect, repeats, distance_m);
+  const RunFigures z = run(zero, repeats, distance_m);
   const RunFigures b = run(irregular, repeats, distance_m);
   std::printf("run, perfect track:   %.3f CPU s per simulated s, %ld steps, %ld Jacobians, max |y1| %.2f mm\n",
               a.cpu_per_simulated_s, a.steps, a.jacobians, a.largest_lateral_m * 1e3);
+  std::printf("run, amplitude 0:     %.3f CPU s per simulated s, %ld steps, %ld Jacobians, max |y1| %.2f mm\n",
+              z.cpu_per_simulated_s, z.steps, z.jacobians, z.largest_lateral_m * 1e3);
   std::printf("run, ERRI B176 low:   %.3f CPU s per simulated s, %ld steps, %ld Jacobians, max |y1| %.2f mm\n",
               b.cpu_per_simulated_s, b.steps, b.jacobians, b.largest_lateral_m * 1e3);
-  std::printf("ratio irregular / perfect: %.3f CPU, %.3f steps\n", b.cpu_per_simulated_s / a.cpu_per_simulated_s,
-              double(b.steps) / double(a.steps));
+  std::printf("ratio amplitude 0 / perfect: %.3f CPU (the machinery)\n", z.cpu_per_simulated_s / a.cpu_per_simulated_s);
+  std::printf("ratio irregular / perfect: %.3f CPU, %.3f steps, %.3f Jacobians\n",
+              b.cpu_per_simulated_s / a.cpu_per_simulated_s, double(b.steps) / double(a.steps),
+              double(b.jacobians) / double(a.jacobians));
   return 0;
 }
