@@ -15,9 +15,10 @@
 // characteristic_functions.hpp: the part of the wheel between a jump's ends
 // never carries a rigid contact); slot k holds the lowest point of the gap
 // over part k, from the field side (slot 0) inwards to the flange (last
-// slot). A cone has one slot; S1002 on UIC60 1:40 has four (borders at
-// u ~ -3, -23 and -37 mm: the near-conformal tread jump at y ~ 0.2 mm, the
-// jump to the flange root at ~4.8 mm and onto the flange face at 6.25 mm).
+// slot). A cone has one slot; S1002 on UIC60 1:40 has five (borders at
+// u ~ 16, -3, -23 and -36 mm: a field-side jump, the near-conformal tread
+// jump at y ~ 0.2 mm, the jump to the flange root at ~4.8 mm and onto the
+// flange face at 6.25 mm; test ContactTables.BenchmarkPairHasTreadAndFlangeSlots).
 // Each slot is one contact with its own Hertz ellipse, so tread and flange
 // (and the two tread contacts of a near-conformal pair) act together. A
 // slot's lowest point may lie on its border (the part has no local minimum):

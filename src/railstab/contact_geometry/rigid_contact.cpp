@@ -1,5 +1,6 @@
 #include <railstab/contact_geometry/rigid_contact.hpp>
 
+#include <railstab/core/bracketed_root.hpp>
 #include <railstab/contact_geometry/wheelset_pose.hpp>
 
 #include <cmath>
@@ -49,39 +50,16 @@ int RigidContactSolution::contacts_right() const {
 
 RigidContactSolution solve_rigid_contact(const ProfilePair& pair, double y, double roll_guess) {
   // Bracket the root of f(phi) around the guess.
-  double a = roll_guess - 1e-3, b = roll_guess + 1e-3;
-  double fa = mismatch(pair, y, a), fb = mismatch(pair, y, b);
-  for (int expand = 0; fa * fb > 0.0; ++expand) {
-    if (expand > 12) {
-      std::ostringstream msg;
-      msg << "rigid contact: no roll angle within +-" << b - roll_guess
-          << " rad makes both wheels touch at lateral shift " << y * 1e3 << " mm ("
-          << pair.wheel.source << " on " << pair.rail.source << ")";
-      throw ContactGeometryError(msg.str());
-    }
-    const double w = b - a;
-    if (std::abs(fa) < std::abs(fb)) a -= w, fa = mismatch(pair, y, a);
-    else b += w, fb = mismatch(pair, y, b);
+  const BracketedRoot root =
+      bracketed_root([&](double roll) { return mismatch(pair, y, roll); }, roll_guess);
+  if (!root.bracketed) {
+    std::ostringstream msg;
+    msg << "rigid contact: no roll angle within +-" << root.half_width
+        << " rad makes both wheels touch at lateral shift " << y * 1e3 << " mm ("
+        << pair.wheel.source << " on " << pair.rail.source << ")";
+    throw ContactGeometryError(msg.str());
   }
-  // Illinois variant of regula falsi.
-  int side = 0;
-  double roll = a;
-  for (int it = 0; it < 100; ++it) {
-    roll = (a * fb - b * fa) / (fb - fa);
-    if (!(roll > a && roll < b)) roll = 0.5 * (a + b);
-    const double fr = mismatch(pair, y, roll);
-    if (fr == 0.0 || b - a < 1e-14) break;
-    if (fr * fb > 0.0) {
-      b = roll, fb = fr;
-      if (side == -1) fa *= 0.5;
-      side = -1;
-    } else {
-      a = roll, fa = fr;
-      if (side == +1) fb *= 0.5;
-      side = +1;
-    }
-    if (std::abs(fr) < 1e-14) break;
-  }
+  const double roll = root.x;
   RigidContactSolution s;
   s.lateral_m = y;
   s.roll_rad = roll;

@@ -1,5 +1,6 @@
 #include <railstab/contact_geometry/table_rigid_contact.hpp>
 
+#include <railstab/core/bracketed_root.hpp>
 #include <railstab/contact_geometry/rigid_contact.hpp>
 
 #include <algorithm>
@@ -53,37 +54,15 @@ TableWheelContact wheel_contact(const ProfileContactGeometry& g, int side, doubl
 }  // namespace
 
 TableRigidRow table_rigid_contact(const ProfileContactGeometry& g, double y, double roll_guess) {
-  double a = roll_guess - 1e-3, b = roll_guess + 1e-3;
-  double fa = mismatch(g, y, a), fb = mismatch(g, y, b);
-  for (int expand = 0; fa * fb > 0.0; ++expand) {
-    if (expand > 12) {
-      std::ostringstream msg;
-      msg << "rigid contact on the contact table: no roll angle within +-" << b - roll_guess
-          << " rad makes both wheels touch at lateral shift " << y * 1e3 << " mm";
-      throw ContactGeometryError(msg.str());
-    }
-    const double w = b - a;
-    if (std::abs(fa) < std::abs(fb)) a -= w, fa = mismatch(g, y, a);
-    else b += w, fb = mismatch(g, y, b);
+  const BracketedRoot root =
+      bracketed_root([&](double roll) { return mismatch(g, y, roll); }, roll_guess);
+  if (!root.bracketed) {
+    std::ostringstream msg;
+    msg << "rigid contact on the contact table: no roll angle within +-" << root.half_width
+        << " rad makes both wheels touch at lateral shift " << y * 1e3 << " mm";
+    throw ContactGeometryError(msg.str());
   }
-  int side = 0;
-  double roll = a;
-  for (int it = 0; it < 100; ++it) {  // Illinois variant of regula falsi
-    roll = (a * fb - b * fa) / (fb - fa);
-    if (!(roll > a && roll < b)) roll = 0.5 * (a + b);
-    const double fr = mismatch(g, y, roll);
-    if (fr == 0.0 || b - a < 1e-14) break;
-    if (fr * fb > 0.0) {
-      b = roll, fb = fr;
-      if (side == -1) fa *= 0.5;
-      side = -1;
-    } else {
-      a = roll, fa = fr;
-      if (side == +1) fb *= 0.5;
-      side = +1;
-    }
-    if (std::abs(fr) < 1e-14) break;
-  }
+  const double roll = root.x;
   TableRigidRow r;
   r.lateral_m = y;
   r.roll_rad = roll;
