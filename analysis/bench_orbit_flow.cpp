@@ -7,7 +7,6 @@
 // time (CLOCK_PROCESS_CPUTIME_ID, median of 3 runs each, all in this one run).
 //   build/bench_orbit_flow [cases-dir]
 #include "cpu_timing.hpp"
-#include <railstab/integrate/integrator.hpp>
 #include <railstab/nonlinear/flow_sensitivity.hpp>
 #include <railstab/nonlinear/model_orbits.hpp>
 #include <railstab/nonlinear/periodic_orbit.hpp>
@@ -31,22 +30,9 @@ int main(int argc, char** argv) {
   const OrbitCoordinates coords = wheelset_orbit_coordinates(model, reduced);
   const EquilibriumResult eq =
       continue_equilibrium_in_speed(model, scene.speed_m_per_s, scene.equilibrium.state, V, {});
-  Eigen::VectorXd x = eq.state;
-  x(reduced[size_t(coords.amplitude_state)]) += 0.005;
-  IntegrationOptions io;
-  io.t_end_s = 6.0;
-  io.output_interval_s = 1e-3;
   const double settle0 = bench::cpu_seconds();
-  const Trajectory run = integrate(model, V, x, io);
+  const OrbitGuess guess = settled_cycle_guess(model, V, eq.state, reduced, coords, 0.005, 6.0);
   const double settle_s = bench::cpu_seconds() - settle0;
-  std::vector<double> times;
-  std::vector<Eigen::VectorXd> states;
-  for (size_t k = 0; k < run.times_s.size(); ++k)
-    if (run.times_s[k] >= 5.0) {
-      times.push_back(run.times_s[k]);
-      states.push_back(reduce_state(reduced, run.states[k]));
-    }
-  const OrbitGuess guess = orbit_guess_from_samples(times, states, coords);
   std::printf("thesis bogie, S1002/UIC60, %.0f m/s, %d states: settling run 6 s %.2f s CPU; "
               "period %.4f s, wheelset1 excursion %.2f mm\n",
               V, system.size, settle_s, guess.period_s, 1e3 * guess.start(coords.amplitude_state));

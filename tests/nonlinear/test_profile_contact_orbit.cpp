@@ -37,23 +37,12 @@ TEST(ProfileContactOrbit, S1002BogieFlangeHuntingCycleIsATimeDomainSolution) {
   const int ia = coords.amplitude_state;
   const EquilibriumResult eq =
       continue_equilibrium_in_speed(model, scene.speed_m_per_s, scene.equilibrium.state, V, {});
-  Eigen::VectorXd x = eq.state;
-  x(reduced[size_t(ia)]) += 0.005;
   IntegrationOptions settle;
-  settle.t_end_s = 6.0;
   settle.output_interval_s = 1e-4;
   settle.relative_tolerance = 1e-8;
   settle.absolute_tolerance = 1e-11;
-  const Trajectory run = integrate(model, V, x, settle);
-  ASSERT_TRUE(run.stopped_early.empty()) << run.stopped_early;
-  std::vector<double> times;
-  std::vector<Eigen::VectorXd> states;
-  for (size_t k = 0; k < run.times_s.size(); ++k)
-    if (run.times_s[k] >= 5.0) {
-      times.push_back(run.times_s[k]);
-      states.push_back(reduce_state(reduced, run.states[k]));
-    }
-  const OrbitGuess guess = orbit_guess_from_samples(times, states, coords);
+  const OrbitGuess guess =
+      settled_cycle_guess(model, V, eq.state, reduced, coords, 0.005, 6.0, settle);
   const PeriodicOrbit o = solve_periodic_orbit(system, coords, OrbitConstraint::fixed_speed(V),
                                                guess.start, guess.period_s, V);
   const double a = o.start(ia) - eq.state(reduced[size_t(ia)]);

@@ -70,40 +70,14 @@ BranchResult branch_from_time_domain(const Model& model, const FlowSystem& syste
   const double V = o.cycle_speed_m_per_s;
   try {
     const EquilibriumResult eq = continue_equilibrium_in_speed(model, speed, equilibrium, V, {});
-    Eigen::VectorXd x = eq.state;
-    x(r.reduced_states[size_t(r.coords.amplitude_state)]) += o.disturbance_m;
-    IntegrationOptions io;
-    io.t_end_s = o.settle_time_s;
-    io.output_interval_s = 1e-3;
     if (o.progress) {
       std::ostringstream line;
       line << "  time domain: " << o.settle_time_s << " s at " << V << " m/s from a "
            << 1e3 * o.disturbance_m << " mm displacement";
       o.progress(line.str());
     }
-    const Trajectory run = integrate(model, V, x, io);
-    if (!run.stopped_early.empty())
-      throw std::runtime_error("the time-domain run stopped early: " + run.stopped_early);
-    // The last second (or half the run): the settled motion.
-    const double from = std::max(0.5 * o.settle_time_s, o.settle_time_s - 1.0);
-    std::vector<double> times;
-    std::vector<Eigen::VectorXd> states;
-    double lo = 1e300, hi = -1e300;
-    for (size_t k = 0; k < run.times_s.size(); ++k)
-      if (run.times_s[k] >= from) {
-        times.push_back(run.times_s[k]);
-        states.push_back(reduce_state(r.reduced_states, run.states[k]));
-        lo = std::min(lo, states.back()(r.coords.amplitude_state));
-        hi = std::max(hi, states.back()(r.coords.amplitude_state));
-      }
-    if (!(hi - lo > 2e-6)) {
-      std::ostringstream msg;
-      msg << "no self-sustained oscillation at " << V << " m/s: the run from a "
-          << 1e3 * o.disturbance_m << " mm displacement decayed to " << 0.5e3 * (hi - lo)
-          << " mm peak after " << o.settle_time_s << " s";
-      throw std::runtime_error(msg.str());
-    }
-    const OrbitGuess guess = orbit_guess_from_samples(times, states, r.coords);
+    const OrbitGuess guess = settled_cycle_guess(model, V, eq.state, r.reduced_states, r.coords,
+                                                 o.disturbance_m, o.settle_time_s);
     const ContinuationOptions c = continuation_for(o, "time-domain", r.coords);
     const PeriodicOrbit first = solve_periodic_orbit(system, r.coords, OrbitConstraint::fixed_speed(V),
                                                      guess.start, guess.period_s, V, c.shooting);

@@ -3,6 +3,7 @@
 #include <railstab/core/coordinates.hpp>
 
 #include <algorithm>
+#include <sstream>
 #include <stdexcept>
 
 namespace railstab {
@@ -60,6 +61,44 @@ HopfStart model_hopf_start(const Model& model, const std::vector<int>& reduced_s
   if (it != hopf.kept_states.end() && hopf.amplitude_per_sqrt_speed.size() > 0)
     s.amplitude_per_sqrt_speed = hopf.amplitude_per_sqrt_speed(Eigen::Index(it - hopf.kept_states.begin()));
   return s;
+}
+
+}  // namespace railstab
+
+namespace railstab {
+
+OrbitGuess settled_cycle_guess(const Model& model, double speed_m_per_s,
+                               const Eigen::VectorXd& equilibrium_full,
+                               const std::vector<int>& reduced_states, const OrbitCoordinates& coords,
+                               double disturbance_m, double settle_time_s, IntegrationOptions options) {
+  Eigen::VectorXd x = equilibrium_full;
+  x(reduced_states[size_t(coords.amplitude_state)]) += disturbance_m;
+  options.t_start_s = 0.0;
+  options.t_end_s = settle_time_s;
+  options.output_interval_s = std::min(options.output_interval_s, 1e-3);
+  const Trajectory run = integrate(model, speed_m_per_s, x, options);
+  if (!run.stopped_early.empty())
+    throw std::runtime_error("the time-domain run stopped early: " + run.stopped_early);
+  // The last second (or half the run): the settled motion.
+  const double from = std::max(0.5 * settle_time_s, settle_time_s - 1.0);
+  std::vector<double> times;
+  std::vector<Eigen::VectorXd> states;
+  double lo = 1e300, hi = -1e300;
+  for (size_t k = 0; k < run.times_s.size(); ++k)
+    if (run.times_s[k] >= from) {
+      times.push_back(run.times_s[k]);
+      states.push_back(reduce_state(reduced_states, run.states[k]));
+      lo = std::min(lo, states.back()(coords.amplitude_state));
+      hi = std::max(hi, states.back()(coords.amplitude_state));
+    }
+  if (!(hi - lo > 2e-6)) {
+    std::ostringstream msg;
+    msg << "no self-sustained oscillation at " << speed_m_per_s << " m/s: the run from a "
+        << 1e3 * disturbance_m << " mm displacement decayed to " << 0.5e3 * (hi - lo)
+        << " mm peak after " << settle_time_s << " s";
+    throw std::runtime_error(msg.str());
+  }
+  return orbit_guess_from_samples(times, states, coords);
 }
 
 }  // namespace railstab

@@ -2,6 +2,7 @@
 // The railway model's periodic orbits: which states the shooting's section
 // and excursion use, and the Hopf start of the branch in the reduced state
 // (flow_system.hpp: the model's state without the wheelsets' spin angles).
+#include <railstab/integrate/integrator.hpp>
 #include <railstab/nonlinear/hopf_criticality.hpp>
 #include <railstab/nonlinear/orbit_continuation.hpp>
 
@@ -28,5 +29,19 @@ OrbitCoordinates wheelset_orbit_coordinates(const Model& model,
 HopfStart model_hopf_start(const Model& model, const std::vector<int>& reduced_states,
                            const Eigen::VectorXd& equilibrium_full, const HopfCriticality& hopf,
                            const OrbitCoordinates& coords);
+
+// The start of a branch from a time-domain cycle: `equilibrium_full` (the
+// steady state at speed_m_per_s, full state) with the amplitude state moved
+// by disturbance_m, run for settle_time_s by integrate() with `options`
+// (its t_end_s replaced; output every 1 ms unless options say finer); the
+// last second of the run (or its second half) gives the orbit's start and
+// period (orbit_guess_from_samples). Throws std::runtime_error, saying why,
+// when the run stops early, decays to below 2 um peak-to-peak, or holds
+// fewer than two periods.
+OrbitGuess settled_cycle_guess(const Model& model, double speed_m_per_s,
+                               const Eigen::VectorXd& equilibrium_full,
+                               const std::vector<int>& reduced_states, const OrbitCoordinates& coords,
+                               double disturbance_m, double settle_time_s,
+                               IntegrationOptions options = {});
 
 }  // namespace railstab
