@@ -164,10 +164,11 @@ OrbitBranch continue_branch(const FlowSystem& system, const OrbitCoordinates& co
         const double na = (next.start(ia) - c.start(ia)) / sa;
         if (nV * tV + na * ta <= 0.0) throw ShootingFailure("the corrector went backwards");
         const int iterations = next.newton_iterations;
-        // Fast: few iterations, or cheap chord iterations that needed no
-        // fresh derivatives before the converged orbit's.
+        // Fast: few iterations, or cheap chord iterations that needed fresh
+        // derivatives at most once before the converged orbit's (the
+        // refresh on reaching the stagnation range is the usual one).
         const bool fast = iterations <= options.fast_newton_iterations ||
-                          (next.sensitivity_flows <= 1 &&
+                          (next.sensitivity_flows <= 2 &&
                            iterations <= 3 * options.fast_newton_iterations);
         branch.orbits.push_back(std::move(next));
         accepted = true;
