@@ -39,6 +39,18 @@ void write_contact(Csv& c, const ContactPoint* p) {
   else c.empty().empty().empty().empty().empty();
 }
 
+// The "equivalent_conicity" array of the JSON: one object per amplitude.
+void write_conicity_points(JsonWriter& j, const std::vector<ConicityPoint>& points) {
+  j.key("equivalent_conicity").begin_array();
+  for (const ConicityPoint& c : points)
+    j.begin_object()
+        .field("amplitude_m", c.amplitude_m)
+        .field("wavelength_m", c.wavelength_m)
+        .field("equivalent_conicity", c.equivalent_conicity)
+        .end_object();
+  j.end_array();
+}
+
 }  // namespace
 
 void write_contact_geometry_report(const ProfilePair& pair, const ContactGeometrySummary& s,
@@ -114,14 +126,8 @@ void write_contact_geometry_report(const ProfilePair& pair, const ContactGeometr
         .field("equivalent_conicity_at_reference_amplitude", s.equivalent_conicity_at_3mm)
         .field("flange_contact_found", s.flange.found);
     if (s.flange.found) j.field("flange_contact_shift_m", s.flange.lateral_shift_m);
-    j.key("equivalent_conicity").begin_array();
-    for (const ConicityPoint& c : s.conicity)
-      j.begin_object()
-          .field("amplitude_m", c.amplitude_m)
-          .field("wavelength_m", c.wavelength_m)
-          .field("equivalent_conicity", c.equivalent_conicity)
-          .end_object();
-    j.end_array().end_object();
+    write_conicity_points(j, s.conicity);
+    j.end_object();
   });
 
   if (!plots) return;
@@ -246,14 +252,8 @@ void write_table_contact_geometry_report(const ProfileContactGeometry& g,
       j.field("equivalent_conicity_at_reference_amplitude", s.equivalent_conicity_at_3mm);
     j.field("flange_contact_found", g.flange_contact_shift_m.has_value());
     if (g.flange_contact_shift_m) j.field("flange_contact_shift_m", *g.flange_contact_shift_m);
-    j.key("equivalent_conicity").begin_array();
-    for (const ConicityPoint& c : s.conicity)
-      j.begin_object()
-          .field("amplitude_m", c.amplitude_m)
-          .field("wavelength_m", c.wavelength_m)
-          .field("equivalent_conicity", c.equivalent_conicity)
-          .end_object();
-    j.end_array().end_object();
+    write_conicity_points(j, s.conicity);
+    j.end_object();
   });
 }
 
