@@ -13,7 +13,6 @@
 #include <railstab/setup/prepare_scene.hpp>
 #include <railstab/equilibrium/speed_continuation.hpp>
 
-#include <algorithm>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -61,16 +60,12 @@ int main(int argc, char** argv) {
   std::printf("%-52s %8s %8s %8s %9s %12s\n", "flow over one period", "steps", "Jacs", "errfail",
               "CPU s", "|end-start|");
   for (const Variant& v : variants) {
-    std::vector<double> cpu;
     FlowResult f;
-    for (int repeat = 0; repeat < 3; ++repeat) {
-      const double t0 = bench::cpu_seconds();
-      f = integrate_flow(system, guess.start, V, guess.period_s, v.options);
-      cpu.push_back(bench::cpu_seconds() - t0);
-    }
-    std::sort(cpu.begin(), cpu.end());
+    // Median of 3 single calls (a flow lasts 0.05-5 s).
+    const double cpu = bench::median_of_batches(
+        [&] { f = integrate_flow(system, guess.start, V, guess.period_s, v.options); }, 3, 0.0);
     std::printf("%-52s %8ld %8ld %8ld %9.3f %12.3e\n", v.name, f.steps, f.jacobian_evaluations,
-                f.error_test_failures, cpu[1], (f.end_state - guess.start).cwiseAbs().maxCoeff());
+                f.error_test_failures, cpu, (f.end_state - guess.start).cwiseAbs().maxCoeff());
   }
   return 0;
 }

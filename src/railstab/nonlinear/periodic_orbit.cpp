@@ -18,15 +18,15 @@ void require_coordinates(const FlowSystem& system, const OrbitCoordinates& c) {
         "system");
 }
 
-// Extremes over the samples.
+// Each state's extremes over a flow's samples.
+void sample_extremes(const std::vector<Eigen::VectorXd>& samples, Eigen::VectorXd& lo,
+                     Eigen::VectorXd& hi) {
+  lo = samples.front(), hi = lo;
+  for (const Eigen::VectorXd& s : samples) lo = lo.cwiseMin(s), hi = hi.cwiseMax(s);
+}
+
 void fill_ranges(PeriodicOrbit& orbit) {
-  const Eigen::Index n = orbit.start.size();
-  orbit.range_min = Eigen::VectorXd::Constant(n, std::numeric_limits<double>::infinity());
-  orbit.range_max = -orbit.range_min;
-  for (const Eigen::VectorXd& s : orbit.samples) {
-    orbit.range_min = orbit.range_min.cwiseMin(s);
-    orbit.range_max = orbit.range_max.cwiseMax(s);
-  }
+  sample_extremes(orbit.samples, orbit.range_min, orbit.range_max);
   orbit.amplitude = (orbit.range_max - orbit.range_min) / 2.0;
 }
 
@@ -101,8 +101,8 @@ PeriodicOrbit solve_periodic_orbit(const FlowSystem& system, const OrbitCoordina
   };
   // Each state's peak-to-peak over a flow's samples.
   auto range_of = [](const FlowResult& flow) -> Eigen::VectorXd {
-    Eigen::VectorXd lo = flow.samples.front(), hi = lo;
-    for (const auto& s : flow.samples) lo = lo.cwiseMin(s), hi = hi.cwiseMax(s);
+    Eigen::VectorXd lo, hi;
+    sample_extremes(flow.samples, lo, hi);
     return hi - lo;
   };
   // The residual (see the header) of the start x, period and speed whose flow is `flow`.
@@ -193,7 +193,7 @@ PeriodicOrbit solve_periodic_orbit(const FlowSystem& system, const OrbitCoordina
     const bool check_merit = step_norm > options.full_step_below_step_norm;
     const bool trial_sensitivities = converged || !chord;
     std::string last_failure;
-    bool accepted = false;
+    bool accepted = false, full_step = false;
     for (int halving = 0; halving <= options.max_step_halvings && !accepted; ++halving, lambda /= 2) {
       Eigen::VectorXd x_trial = x0 + lambda * dz.head(n);
       x_trial(is) = 0.0;
@@ -217,7 +217,8 @@ PeriodicOrbit solve_periodic_orbit(const FlowSystem& system, const OrbitCoordina
       }
       x0 = std::move(x_trial), T = T_trial, V = V_trial;
       flow = std::move(trial);
-      orbit.damped_steps += lambda < 1.0 ? 1 : 0;
+      full_step = lambda == 1.0;
+      orbit.damped_steps += full_step ? 0 : 1;
       accepted = true;
     }
     if (!accepted) {
@@ -231,7 +232,9 @@ PeriodicOrbit solve_periodic_orbit(const FlowSystem& system, const OrbitCoordina
                             std::to_string(std::ldexp(1.0, -options.max_step_halvings)) +
                             " step)");
     }
-    if (converged) {
+    // A converging step that had to be shortened (its flow failed at the
+    // full step) did not reach the corrected point: iterate on.
+    if (converged && full_step) {
       // `flow` is at the corrected point: multipliers, samples, residual.
       orbit.speed_m_per_s = V;
       orbit.period_s = T;
