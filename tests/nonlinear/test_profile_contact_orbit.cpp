@@ -70,5 +70,7 @@ TEST(ProfileContactOrbit, S1002BogieFlangeHuntingCycleIsATimeDomainSolution) {
   const double scale = o.amplitude.cwiseAbs().maxCoeff();
   std::printf("[ S1002    ] return after one period: %.3e of the largest amplitude\n",
               (back - o.start).cwiseAbs().maxCoeff() / scale);
-  EXPECT_LT((back - o.start).cwiseAbs().maxCoeff(), 1e-5 * scale);
+  // 1e-6 of the amplitude, as issue 22 asks and the knife-edge vehicle's
+  // test checks (measured 5e-8).
+  EXPECT_LT((back - o.start).cwiseAbs().maxCoeff(), 1e-6 * scale);
 }
