@@ -51,10 +51,12 @@ TEST(CliVerifyAnyMode, FitsTheSpinModeAndTheReportNamesTheCrossing) {
   fs::remove_all(dir);
 }
 
-// dVc/dp needs an eigenvalue that crosses: where the stability is lost by a
-// jump of the steady state (the thesis vehicle in the arc at 47.5 m/s), the
-// sensitivity command says so and writes nothing.
-TEST(CliVerifyAnyMode, SensitivityRefusesAJumpOfTheSteadyState) {
+// dVc/dp needs a stability boundary: where the sweep finds none (the S1002
+// thesis vehicle in the arc is stable through 45..50 m/s) the sensitivity
+// command says so and writes nothing. (Its refusal of a loss by a jump lost
+// its scenario: the jump at 47.5 m/s was an artefact of the tread slots
+// counting their shared overlap twice, docs/model.md 6.1.)
+TEST(CliVerifyAnyMode, SensitivityRefusesWhereThereIsNoBoundary) {
   const fs::path dir = fs::temp_directory_path() / ("railstab_jump_sens_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
@@ -64,8 +66,8 @@ TEST(CliVerifyAnyMode, SensitivityRefusesAJumpOfTheSteadyState) {
        "50", "--no-plots", "--out", "o"},
       dir);
   EXPECT_NE(run.exit_code, 0) << run.output;
-  EXPECT_NE(run.output.find("jump of the steady state"), std::string::npos) << run.output;
-  EXPECT_NE(run.output.find("only defined for an oscillatory crossing"), std::string::npos)
+  EXPECT_NE(run.output.find("no critical speed between 45"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("no stability boundary to differentiate"), std::string::npos)
       << run.output;
   EXPECT_FALSE(fs::exists(dir / "o"));
   fs::remove_all(dir);

@@ -40,16 +40,18 @@ CriticalSpeedResult search(const std::string& scene, double from, double to, dou
 
 }  // namespace
 
-// The bracket 45..50 m/s of the default grid (45: -7.1 1/s, 47.5: -1.7 1/s,
-// 50: +0.44 1/s): the crossing is continuous (the final bracket's real parts
-// approach zero) and oscillatory at 13.1 Hz, the wheelset spin mode.
+// The bracket 45..50 m/s of the default grid: the crossing is continuous
+// (the final bracket's real parts approach zero) and oscillatory at 13.1 Hz,
+// the wheelset spin mode (12.3 Hz at 47.5 m/s, 13.3 Hz at the crossing).
+// 48.77 m/s since the tread slots share their overlap (docs/model.md 6.1;
+// 47.83 m/s at 13.1 Hz when both counted it).
 TEST(CurveStabilityProfiles, BogieArcCriticalSpeedIsAHopfCrossingOfASpinMode) {
   const CriticalSpeedResult r = search(kBogie, 45.0, 50.0, 2.5);
   ASSERT_TRUE(r.critical_speed_found);
   EXPECT_EQ(r.loss.kind, LossOfStabilityKind::oscillatory_crossing);
-  EXPECT_NEAR(r.critical_speed_m_per_s, 47.83, 0.01);
+  EXPECT_NEAR(r.critical_speed_m_per_s, 48.77, 0.01);
   const ModeReport& m = r.at_critical.modes[size_t(r.at_critical.least_stable)];
-  EXPECT_NEAR(m.frequency_hz, 13.1, 0.1);
+  EXPECT_NEAR(m.frequency_hz, 13.3, 0.1);
   ASSERT_FALSE(m.participation.empty());
   EXPECT_EQ(m.participation.front().coordinate, int(CoordinateIndex::pitch));  // spin
   // At the crossing |Re| is small against the grid bracket's spread.
@@ -63,35 +65,32 @@ TEST(CurveStabilityProfiles, BogieArcCriticalSpeedIsAHopfCrossingOfASpinMode) {
 // (two-point flange-root contact, spin) and the integration: measured 0.003 %
 // (real part) at 47.5 and 48.5 m/s; asserted to 1 % and 0.1 % (frequency).
 TEST(CurveStabilityProfiles, SpinModeGrowsAndDecaysAtItsEigenvalueInTheTimeDomain) {
-  for (const double V : {47.5, 48.5}) {
+  for (const double V : {47.5, 50.0}) {
     const PreparedScene s = prepare_scene(kBogie, in_arc(V));
     VerificationOptions o;
     o.lateral_modes_only = false;
     o.amplitude_m = 1e-5;  // rad/s here: the signal is a spin rate
     const VerificationResult r = verify_least_stable_mode(s.model, V, s.equilibrium.state, o);
     EXPECT_EQ(r.signal, "wheelset2.pitch_rad/s") << V;
-    EXPECT_EQ(r.eigen_real_per_s > 0.0, V > 47.83) << V;
+    EXPECT_EQ(r.eigen_real_per_s > 0.0, V > 48.77) << V;
     EXPECT_LT(r.real_difference_relative, 0.01) << V << " m/s: eigen " << r.eigen_real_per_s
                                                  << " fitted " << r.fitted_real_per_s;
     EXPECT_LT(r.frequency_difference_relative, 1e-3) << V;
   }
 }
 
-// The vehicle: stable up to 47.49 m/s (least stable: bogie longitudinal,
-// -0.026 1/s), and at 47.5 m/s the steady state found is a saddle (a real
-// eigenvalue of about +207 1/s): no eigenvalue crosses, the largest real part
-// jumps. Reported as a jump, with the unstable side's mode.
-TEST(CurveStabilityProfiles, VehicleArcLosesStabilityByAJumpNotACrossing) {
+// The vehicle stays stable through 45..50 m/s (up to 320 mm of cant
+// deficiency). When the two S1002 tread slots both counted their common
+// overlap, the steady state found at 47.5 m/s was a saddle (a real
+// eigenvalue of +207 1/s) and the report showed a jump there: an artefact of
+// the normal force doubling within a table cell (docs/model.md 6.1). The
+// classification of a jump is tested on made-up brackets below.
+TEST(CurveStabilityProfiles, VehicleArcStaysStableThroughHighCantDeficiency) {
   const CriticalSpeedResult r = search(kVehicle, 45.0, 50.0, 2.5);
-  ASSERT_TRUE(r.critical_speed_found);
-  EXPECT_EQ(r.loss.kind, LossOfStabilityKind::jump);
-  EXPECT_LT(r.loss.stable_max_real_part_per_s, -0.01);
-  EXPECT_GT(r.loss.unstable_max_real_part_per_s, 100.0);
-  EXPECT_EQ(r.loss.unstable_eigenvalue.imag(), 0.0);
-  EXPECT_LE(r.loss.unstable_speed_m_per_s - r.loss.stable_speed_m_per_s, 0.01);
-  // The reported modes are the unstable side's.
-  EXPECT_EQ(r.at_critical.speed_m_per_s, r.loss.unstable_speed_m_per_s);
-  EXPECT_NE(describe_loss_of_stability(r.loss).find("jump"), std::string::npos);
+  EXPECT_FALSE(r.critical_speed_found);
+  ASSERT_FALSE(r.grid.empty());
+  EXPECT_EQ(r.grid.back().speed_m_per_s, 50.0);
+  for (const StabilityPoint& p : r.grid) EXPECT_LT(p.max_real_part, 0.0) << p.speed_m_per_s;
 }
 
 // The steady state at 45 m/s cannot be found from the nominal position in

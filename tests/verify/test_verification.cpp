@@ -105,11 +105,11 @@ TEST(Verification, FromTheSceneOffsetsMeetsTheTargets) {
 // The thesis bogie on S1002/UIC60 (cases/thesis_bogie_s1002_tangent.toml,
 // critical speed 39.80 m/s) at 20 and 25 m/s, started along the hunting mode
 // with 0.01 mm: the time domain decays as the eigenvalue says (measured
-// 0.32 % / 0.56 % in the real part, 0.10 % / 0.18 % in the frequency). The
-// linear range of this profile pair is small: the contact jumps at a lateral
-// shift of 0.25 mm, so the default 0.1 mm start is already nonlinear (8 % at
-// 30 m/s), and closer to the critical speed the agreement degrades even at
-// 0.01 mm (2.4 % at 33 m/s, 8 % at 36 m/s): see the next test.
+// 0.32 % / 0.56 % in the real part, 0.10 % / 0.18 % in the frequency, when
+// the two tread slots both counted their shared overlap). The linear range
+// of this profile pair is small: the contact jumps at a lateral shift of
+// 0.25 mm, so a 0.1 mm start is already nonlinear; closer to the critical
+// speed see the next test.
 TEST(Verification, ProfileBogieMatchesEigenvalueInItsLinearRange) {
   for (double v : {20.0, 25.0}) {
     const PreparedScene s = prepare_scene(std::string(RAILSTAB_CASES_DIR) +
@@ -126,12 +126,14 @@ TEST(Verification, ProfileBogieMatchesEigenvalueInItsLinearRange) {
 
 // Near the critical speed (36 m/s, Vc 39.80 m/s) the difference is a
 // nonlinearity that vanishes with the amplitude, not a linearisation error:
-// measured 7.9 % (real part) at 10 um, 0.27 % at 2 um, 0.049 % at 1 um (at
-// 20 m/s: 0.32 % at 10 um, 0.007 % at 1 um). The relative error grows towards
-// the critical speed because the real part it is divided by goes to zero
-// (-0.22 1/s here against -0.51 at 20 m/s), and the saturating creep law's
-// correction is of first order in the creepage (SHE: F = F_L (1 - u/3 ...)).
-// Asserted: within 0.5 % at 1 um, and at least 10x smaller than at 10 um.
+// measured 0.19 % (real part) at 10 um and 0.019 % at 1 um, first order in
+// the amplitude as the saturating creep law's correction is in the creepage
+// (SHE: F = F_L (1 - u/3 ...)). The relative error grows towards the
+// critical speed because the real part it is divided by goes to zero (-0.22
+// 1/s here against -0.51 at 20 m/s). (7.9 % at 10 um while the two tread
+// slots both counted their shared overlap, docs/model.md 6.1: a wheel moving
+// off the centre met a force that doubled within 0.1 mm.)
+// Asserted: within 0.5 % at 1 um, and at least 5x smaller than at 10 um.
 TEST(Verification, ProfileBogieNearCriticalSpeedConvergesAsTheAmplitudeShrinks) {
   const PreparedScene s = prepare_scene(
       std::string(RAILSTAB_CASES_DIR) + "/thesis_bogie_s1002_tangent.toml", {36.0, {}, {}, {}});
@@ -143,5 +145,5 @@ TEST(Verification, ProfileBogieNearCriticalSpeedConvergesAsTheAmplitudeShrinks) 
     error[i] = verify_least_stable_mode(s.model, 36.0, s.equilibrium.state, o).real_difference_relative;
   }
   EXPECT_LT(error[1], 0.005);
-  EXPECT_GT(error[0], 10.0 * error[1]) << error[0] << " " << error[1];
+  EXPECT_GT(error[0], 5.0 * error[1]) << error[0] << " " << error[1];
 }

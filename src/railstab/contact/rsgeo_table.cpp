@@ -267,6 +267,8 @@ std::shared_ptr<const ProfileContactGeometry> rsgeo_contact_geometry(
       v[size_t(TableQuantity::A_per_m)][n] = lerp(&RigidRow::A);
       v[size_t(TableQuantity::B_per_m)][n] = lerp(&RigidRow::B);
       v[size_t(TableQuantity::on_border)][n] = 0.0;
+      // One slot: no next slot to share an overlap with (unused).
+      v[size_t(TableQuantity::barrier_to_next_gap0_m)][n] = v[size_t(TableQuantity::gap0_m)][n];
     }
   }
   g->table = ContactTable::from_node_values(grid, 0.0, {}, values);

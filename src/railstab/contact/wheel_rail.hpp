@@ -37,6 +37,23 @@
 // whose lowest point sits on its border (not a true contact: its overlap is
 // its neighbour's) is faded out by its interpolated on_border weight.
 //
+// Shared overlap (near-conformal treads: S1002 on UIC60 has two tread slots
+// whose overlaps join). Where the lowest points of neighbouring slots k and
+// j = k +- 1 both overlap and the highest gap between them, the saddle b
+// (barrier_to_next_gap0_m + vertical), is below zero, the overlap region is
+// connected and its common depth s = -b would be counted twice. Each slot
+// keeps its own lobe below the saddle, e = d - s (d = -g its overlap), and
+// the two share s in proportion to their lobes squared:
+//   d_eff,k = d_k - w_j s e_j^2 / (e_k^2 + e_j^2)   (e clipped at 0, +1e-12 m
+//                                                    each; s <= min(d_k, d_j))
+// (w_j the neighbour's interior weight), so a lobe born at the saddle
+// (e_j = 0) adds nothing, and the pair's effective overlaps sum to
+// e_k + e_j + s: the deeper one's depth plus the shallower lobe. With
+// separate overlaps (b >= 0) each slot keeps its own d. The penetration is
+// d_eff cos(gamma). Without this, the force doubled within one table cell
+// where a second tread slot's lowest point left its border while
+// overlapping (docs/model.md, section 6.2).
+//
 // Contact frame: l = x_I (rolling direction), nu = normal from the rail into
 // the wheel, t = nu x l (lateral, in the contact plane). Creepages (ERRATA 10,
 // normalised by V > 0): xi_x = v_slip.l / V, xi_y = v_slip.t / V,
@@ -173,6 +190,35 @@ ContactPointGeometry<T> linear_conicity_geometry(const ModelContactTpl<S>& conta
   return g;
 }
 
+// The part of slot `slot`'s vertical overlap -gap that a neighbouring slot
+// carries (header comment, "Shared overlap"); 0 where no neighbour's
+// overlap joins it.
+template <class T>
+T shared_overlap_m(const ContactTable& table, const WheelPoseOf<T>& pose, int slot, const T& gap) {
+  constexpr double kLobeFloor_m = 1e-12;
+  T shared = T(0);
+  for (const int j : {slot - 1, slot + 1}) {
+    if (j < 0 || j >= table.slots()) continue;
+    const T gap_j = table.vertical_gap<T>(j, pose);
+    if (value_of(gap_j) >= 0.0) continue;
+    const T barrier = table.barrier_to_next_gap<T>(std::min(slot, j), pose);
+    if (value_of(barrier) >= 0.0) continue;  // separate overlaps
+    const T w_j = table.interior_weight<T>(j, pose);
+    if (value_of(w_j) <= 0.0) continue;
+    // The saddle lies between the two lowest points, so it is no deeper than
+    // the shallower of them; the interpolated tables can disagree by their
+    // resolution error (a few um), which must not remove both contacts.
+    T saddle = -barrier;
+    if (value_of(saddle) > -value_of(gap)) saddle = -gap;
+    if (value_of(saddle) > -value_of(gap_j)) saddle = -gap_j;
+    const auto clipped = [](const T& x) { return value_of(x) > 0.0 ? x : T(0); };
+    const T lobe = clipped(T(-gap - saddle)) + kLobeFloor_m;
+    const T lobe_j = clipped(T(-gap_j - saddle)) + kLobeFloor_m;
+    shared += w_j * saddle * lobe_j * lobe_j / (lobe * lobe + lobe_j * lobe_j);
+  }
+  return shared;
+}
+
 // Slot `slot` of a profile contact; the full geometry only where the slot
 // overlaps (vertical gap < 0) and is not wholly a border contact.
 template <class T, class S>
@@ -199,9 +245,14 @@ ContactPointGeometry<T> profile_slot_geometry(const ModelContactTpl<S>& contact,
   const TableContact<T> c = table.evaluate<T>(slot, pose);
   g.weight = c.interior_weight;
   if (value_of(g.weight) <= 0.0) return g;
+  const T shared = shared_overlap_m(table, pose, slot, gap);
+  if (value_of(shared) >= -value_of(gap)) {  // wholly the neighbour's
+    g.weight = T(0);
+    return g;
+  }
   const T alpha = c.wheel_slope_rad;  // gamma - s phi: the normal's angle in I
   g.nu_I = Vec3<T>(T(0), T(-s) * sin(alpha), cos(alpha));
-  g.penetration_m = -c.normal_gap_m;
+  g.penetration_m = -(gap + shared) * cos(c.contact_angle_rad);
   g.rolling_radius_m = c.rolling_radius_m;
   const T eta = s * (pg.pair.wheel_offset_y_m + c.wheel_u_m);
   g.point_I = Vec3<T>(T(0), eta, -c.rolling_radius_m) - T(0.5) * g.penetration_m * g.nu_I;

@@ -32,7 +32,9 @@ constexpr const char* kColumnNames[kTableQuantities][4] = {
      "curvature_a_dq_droll_per_m2_per_rad"},
     {"curvature_b_per_m", "curvature_b_dq_per_m2", "curvature_b_droll_per_m_per_rad",
      "curvature_b_dq_droll_per_m2_per_rad"},
-    {"on_border", "on_border_dq_per_m", "on_border_droll_per_rad", "on_border_dq_droll_per_m_per_rad"}};
+    {"on_border", "on_border_dq_per_m", "on_border_droll_per_rad", "on_border_dq_droll_per_m_per_rad"},
+    {"barrier_to_next_gap0_m", "barrier_to_next_gap0_dq", "barrier_to_next_gap0_droll_m_per_rad",
+     "barrier_to_next_gap0_dq_droll_per_rad"}};
 
 // The shortest text that reads back to the same double.
 std::string exact(double v) {

@@ -51,6 +51,8 @@ double quantity_of(const ContactPoint& c, TableQuantity q) {
     case TableQuantity::A_per_m: return c.A_per_m;
     case TableQuantity::B_per_m: return c.B_per_m;
     case TableQuantity::on_border: return c.interior ? 0.0 : 1.0;
+    // Pairwise: filled in by make_contact_table (the slot's own gap0 until then).
+    case TableQuantity::barrier_to_next_gap0_m: return c.vertical_gap_m;
     case TableQuantity::count: break;
   }
   return 0.0;
@@ -186,14 +188,23 @@ ContactTable make_contact_table(const ProfilePair& pair, const ContactTableOptio
   ContactTable::NodeValues values(static_cast<size_t>(slots));
   for (auto& quantities : values)
     for (auto& v : quantities) v.assign(nodes, 0.0);
-  for (int slot = 0; slot < slots; ++slot)
-    for (int i = 0; i < grid.nq_; ++i)
-      for (int j = 0; j < grid.nt_; ++j) {
-        const WheelPose pose{grid.nominal_lateral_m_ + grid.lateral_at(i), 0.0, grid.roll_at(j)};
+  const auto at = [&](int slot, TableQuantity q, size_t node) -> double& {
+    return values[size_t(slot)][size_t(int(q))][node];
+  };
+  for (int i = 0; i < grid.nq_; ++i)
+    for (int j = 0; j < grid.nt_; ++j) {
+      const WheelPose pose{grid.nominal_lateral_m_ + grid.lateral_at(i), 0.0, grid.roll_at(j)};
+      const size_t node = size_t(i * grid.nt_ + j);
+      for (int slot = 0; slot < slots; ++slot) {
         const ContactPoint c = direct_slot_contact(pair, grid, slot, pose);
-        for (int q = 0; q < kTableQuantities; ++q)
-          values[size_t(slot)][size_t(q)][size_t(i * grid.nt_ + j)] = quantity_of(c, TableQuantity(q));
+        for (int q = 0; q < kTableQuantities; ++q) at(slot, TableQuantity(q), node) = quantity_of(c, TableQuantity(q));
       }
+      // The saddle between each slot's lowest point and the next one's.
+      for (int slot = 0; slot + 1 < slots; ++slot)
+        at(slot, TableQuantity::barrier_to_next_gap0_m, node) =
+            maximum_gap_between(pair, pose, at(slot, TableQuantity::wheel_u_m, node),
+                                at(slot + 1, TableQuantity::wheel_u_m, node));
+    }
   return ContactTable::from_node_values(o, grid.nominal_lateral_m_, std::move(borders), values);
 }
 
@@ -246,10 +257,11 @@ TableResolution measure_table_resolution(const ProfilePair& pair, const ContactT
             table.evaluate<double>(slot, WheelPoseOf<double>{pose.lateral_m, 0.0, th});
         const double values[kTableQuantities] = {tab.vertical_gap_m, tab.wheel_u_m, tab.rail_y_m,
                                                  tab.contact_angle_rad, tab.rolling_radius_m,
-                                                 tab.A_per_m, tab.B_per_m, tab.on_border};
+                                                 tab.A_per_m, tab.B_per_m, tab.on_border, 0.0};
         auto& worst = jump ? r.across_jump : r.smooth;
         (jump ? r.jump_cells : r.smooth_cells) += 1;
-        for (int k = 0; k < kTableQuantities; ++k)
+        // (The saddle is a pair's, not the slot's: not measured here.)
+        for (int k = 0; k < int(TableQuantity::barrier_to_next_gap0_m); ++k)
           worst[size_t(k)] = std::max(worst[size_t(k)],
                                       std::abs(values[k] - quantity_of(direct, TableQuantity(k))));
       }

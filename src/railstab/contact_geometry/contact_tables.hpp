@@ -62,6 +62,11 @@ enum class TableQuantity : int {
   A_per_m,             // Hertz relative curvatures
   B_per_m,
   on_border,           // 1 where the slot's lowest point is on its border
+  // The highest gap0 on the wheel between this slot's lowest point and the
+  // next slot's (slot k and k + 1; the last slot: its own gap0, unused): the
+  // saddle of a connected overlap of the two (wheel_rail.hpp, "Shared
+  // overlap").
+  barrier_to_next_gap0_m,
   count
 };
 inline constexpr int kTableQuantities = int(TableQuantity::count);
@@ -105,6 +110,11 @@ class ContactTable {
   template <class T> TableContact<T> evaluate(int slot, const WheelPoseOf<T>& pose) const;
   // The vertical gap alone (g0 + vertical), the cheap test for contact.
   template <class T> T vertical_gap(int slot, const WheelPoseOf<T>& pose) const;
+  // The vertical gap of the saddle between the lowest points of `slot` and
+  // `slot + 1` (barrier_to_next_gap0_m + vertical; < 0: their overlaps join).
+  template <class T> T barrier_to_next_gap(int slot, const WheelPoseOf<T>& pose) const;
+  // The slot's interior weight alone (TableContact::interior_weight).
+  template <class T> T interior_weight(int slot, const WheelPoseOf<T>& pose) const;
   // The lowest vertical gap over all slots (< 0: the wheel overlaps its rail).
   double lowest_vertical_gap(const WheelPoseOf<double>& pose) const {
     double lowest = vertical_gap<double>(0, pose);
@@ -250,6 +260,30 @@ template <class T> T ContactTable::vertical_gap(int slot, const WheelPoseOf<T>& 
 }
 
 template <class T>
+T ContactTable::barrier_to_next_gap(int slot, const WheelPoseOf<T>& pose) const {
+  return interpolate(slot, TableQuantity::barrier_to_next_gap0_m, locate(slot, pose)) +
+         pose.vertical_m;
+}
+
+namespace contact_table_detail {
+// Smoothstep of 1 - on_border, u -> 3u^2 - 2u^3 on [0, 1], constant outside:
+// C1 also where the interpolant leaves [0, 1] (a plain clamp would kink).
+template <class T> T interior_weight_of(const T& border) {
+  const double b = value_of(border);
+  if (b <= 0.0) return T(1);
+  if (b >= 1.0) return T(0);
+  const T u = 1.0 - border;
+  return u * u * (3.0 - 2.0 * u);
+}
+}  // namespace contact_table_detail
+
+template <class T>
+T ContactTable::interior_weight(int slot, const WheelPoseOf<T>& pose) const {
+  return contact_table_detail::interior_weight_of(
+      interpolate(slot, TableQuantity::on_border, locate(slot, pose)));
+}
+
+template <class T>
 TableContact<T> ContactTable::evaluate(int slot, const WheelPoseOf<T>& pose) const {
   using std::cos;
   const Cell<T> cell = locate(slot, pose);
@@ -265,17 +299,7 @@ TableContact<T> ContactTable::evaluate(int slot, const WheelPoseOf<T>& pose) con
   c.wheel_slope_rad = c.contact_angle_rad - pose.roll_rad;
   const T border = interpolate(slot, TableQuantity::on_border, cell);
   c.on_border = value_of(border);
-  // Smoothstep of 1 - on_border, u -> 3u^2 - 2u^3 on [0, 1], constant
-  // outside: C1 also where the interpolant leaves [0, 1] (a plain clamp
-  // would kink there).
-  if (c.on_border <= 0.0) {
-    c.interior_weight = T(1);
-  } else if (c.on_border >= 1.0) {
-    c.interior_weight = T(0);
-  } else {
-    const T u = 1.0 - border;
-    c.interior_weight = u * u * (3.0 - 2.0 * u);
-  }
+  c.interior_weight = contact_table_detail::interior_weight_of(border);
   return c;
 }
 

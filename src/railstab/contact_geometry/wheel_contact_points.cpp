@@ -168,4 +168,27 @@ ContactPoint minimum_gap_in_wheel_range(const ProfilePair& pair, const WheelPose
   return f.contact_at(f.refine(u[i - 1], u[i + 1], u[i]), true);
 }
 
+double maximum_gap_between(const ProfilePair& pair, const WheelPose& pose, double u_a, double u_b) {
+  const GapFunction f(pair, pose);
+  const double u0 = std::min(u_a, u_b), u1 = std::max(u_a, u_b);
+  if (!(u1 > u0)) return f.at(u0).g;
+  std::vector<double> u, g;
+  sample(f, u0, u1, u, g);
+  const size_t i = size_t(std::max_element(g.begin(), g.end()) - g.begin());
+  if (i == 0 || i + 1 == u.size()) return g[i];  // monotone: the saddle is an end
+  // Golden section on -g over the two samples' cells around the largest.
+  double a = u[i - 1], b = u[i + 1];
+  const double phi = 0.5 * (std::sqrt(5.0) - 1.0);
+  double x1 = b - phi * (b - a), x2 = a + phi * (b - a);
+  double f1 = f.at(x1).g, f2 = f.at(x2).g;
+  while (b - a > 1e-10) {
+    if (f1 > f2) {
+      b = x2, x2 = x1, f2 = f1, x1 = b - phi * (b - a), f1 = f.at(x1).g;
+    } else {
+      a = x1, x1 = x2, f1 = f2, x2 = a + phi * (b - a), f2 = f.at(x2).g;
+    }
+  }
+  return std::max(g[i], f.at(0.5 * (a + b)).g);
+}
+
 }  // namespace railstab

@@ -74,4 +74,10 @@ std::vector<ContactPoint> find_contact_points(const ProfilePair& pair, const Whe
 ContactPoint minimum_gap_in_wheel_range(const ProfilePair& pair, const WheelPose& pose,
                                         double u_min, double u_max);
 
+// The highest g on the wheel between u_a and u_b (either order): the saddle
+// an overlap must cross to join the contacts at u_a and u_b (< 0: their
+// overlaps are one connected region). Sampled at kContactSearchStep_m, the
+// largest sample refined by golden section.
+double maximum_gap_between(const ProfilePair& pair, const WheelPose& pose, double u_a, double u_b);
+
 }  // namespace railstab
