@@ -68,6 +68,15 @@ inline constexpr NameTable<TangentialForceKind, 3> kTangentialForceNames = {{
 // every model built from the scene.
 struct ProfileContactGeometry;
 
+// Default contact damping of a scene's Hertz contact: the vertical damping of
+// one rail pad, 7.5e4 N s/m (Zhai, Wang & Lin, "Modelling and experiment of
+// railway ballast vibrations", J. Sound Vib. 270 (2004) 673-683, track
+// parameters). The track is rigid in this model, so the damper under each
+// wheel stands for the dissipation of the rail support beneath it; on the
+// thesis vehicle it damps the ~160 Hz wheelset contact modes to a damping
+// ratio of ~0.05 (docs/model.md, section 13).
+inline constexpr double kDefaultNormalDamping_N_s_per_m = 7.5e4;
+
 struct ContactSpec {
   std::string name;
   ContactGeometryKind geometry = ContactGeometryKind::knife_edge_cone;
@@ -81,11 +90,12 @@ struct ContactSpec {
   // Viscous damping of the Hertz contact along its normal (rail pad, track
   // bed, material damping lumped), in parallel with the Hertz spring while
   // the wheel is in contact; the normal force never pulls (clipped at 0).
-  // The thesis has none (default 0): its wheel-rail vertical modes are then
-  // damped only through the creep forces and can go unstable in curves.
-  // Lift-off events are then located where the (unclipped) normal force
-  // crosses zero, which can be before the penetration does. Hertz normal
-  // force only.
+  // A scene's default is kDefaultNormalDamping_N_s_per_m for Hertz contact
+  // (the thesis has none: its cases say 0, and their wheel-rail vertical
+  // modes are then damped only through the creep forces and can go unstable
+  // in curves). Lift-off events are then located where the (unclipped)
+  // normal force crosses zero, which can be before the penetration does.
+  // Hertz normal force only.
   double normal_damping_N_s_per_m = 0.0;
   // Validity limit of the flangeless contact models: a wheelset whose lateral
   // shift exceeds it would be in flange contact, which is not modelled, so the

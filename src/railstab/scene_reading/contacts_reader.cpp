@@ -61,8 +61,10 @@ ContactSpec read_contact(const TableReader& contact, std::string name) {
   spec.rail_poisson_ratio = contact.number_or("rail_poisson_ratio", "", spec.rail_poisson_ratio);
   spec.spin_creepage = contact.flag_or("spin_creepage", spec.spin_creepage);
   spec.flange_clearance_m = contact.number_or("flange_clearance_m", "m", spec.flange_clearance_m);
-  spec.normal_damping_N_s_per_m =
-      contact.number_or("normal_damping_N_s_per_m", "N s/m", spec.normal_damping_N_s_per_m);
+  // Default: the rail pad's damping for Hertz contact (contact_spec.hpp);
+  // none for a prescribed load, which has no normal motion to damp.
+  spec.normal_damping_N_s_per_m = contact.number_or(
+      "normal_damping_N_s_per_m", "N s/m", prescribed ? 0.0 : kDefaultNormalDamping_N_s_per_m);
   spec.creep_law = read_creep_law(contact, spec);
   if (spec.geometry == ContactGeometryKind::profiles) {
     read_profile_contact(contact, spec);
