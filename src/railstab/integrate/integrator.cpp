@@ -5,10 +5,13 @@
 
 #include <railstab/integrate/root_functions.hpp>
 #include <railstab/integrate/stepper.hpp>
+#include <railstab/model/wheel_forces.hpp>
 
 #include <chrono>
 #include <cmath>
 #include <ctime>
+#include <iomanip>
+#include <optional>
 #include <limits>
 #include <sstream>
 
@@ -56,13 +59,63 @@ std::string flange_message(const Model& model, const RootFunction& f, double t_s
   return msg.str();
 }
 
+// A wheel at the edge of its contact table (root_functions.hpp): where it
+// sits, and what it is doing, from its forces at that moment: a wheel on
+// its flange with Y/Q beyond Nadal's limit, or lifted above a centred
+// wheel's height by more than 1 mm, is climbing its rail.
+std::string table_edge_message(const Model& model, const RootFunctionSet& roots, int i,
+                               double speed_m_per_s, double t_s, const Eigen::VectorXd& x) {
+  const RootFunction& f = roots[i];
+  const RootFunctionSet::TablePosition p = roots.table_position(i, t_s, x);
+  std::ostringstream msg;
+  msg << std::setprecision(3);
+  msg << roots.wheel_name(i) << " reached the edge of its contact table at t = " << t_s
+      << " s: lateral shift " << 1e3 * p.lateral_m << " mm from the centred position (table +-"
+      << 1e3 * p.half_range_m << " mm), roll " << 1e3 * p.roll_rad << " mrad (table +-"
+      << 1e3 * p.roll_half_range_rad << " mrad), the wheel " << 1e3 * p.lift_m
+      << " mm above a centred wheel";
+  std::optional<WheelForces> wheel;
+  std::string forces_error;
+  try {
+    for (const WheelForces& w : wheel_forces(model, speed_m_per_s, t_s, x))
+      if (w.body == f.body && w.side == f.side) wheel = w;
+  } catch (const std::exception& e) {
+    forces_error = e.what();
+  }
+  bool climbing = p.lift_m > 1e-3;
+  if (wheel) {
+    msg << "; Y " << 1e-3 * wheel->Y_N << " kN, Q " << 1e-3 * wheel->Q_N << " kN";
+    if (wheel->y_over_q) msg << ", Y/Q " << *wheel->y_over_q;
+    if (wheel->nadal_limit) {
+      msg << " (Nadal's limit " << *wheel->nadal_limit << ")";
+      if (wheel->y_over_q && *wheel->y_over_q >= *wheel->nadal_limit) climbing = true;
+    }
+    if (wheel->Q_N <= 0.0) msg << ", the wheel in the air";
+  } else if (forces_error.empty()) {
+    msg << "; no contact force: the wheel in the air";  // (wheel_forces lists loaded wheels)
+  } else {
+    msg << "; its forces cannot be evaluated there (" << forces_error << ")";
+  }
+  msg << (climbing ? ": flange climbing, the wheelset is derailing"
+                   : ": beyond the table's range (widen table_lateral_half_range_m or "
+                     "table_roll_half_range_rad if the motion is physical)");
+  return msg.str();
+}
+
 // Records the events of one root return; returns the stop message, if any.
 std::string handle_roots(const Model& model, const RootFunctionSet& roots,
                          const std::vector<int>& directions, double t_s,
-                         const IntegrationOptions& options, Trajectory& traj) {
+                         const IntegrationOptions& options, double speed_m_per_s,
+                         const Eigen::VectorXd& x, Trajectory& traj) {
   std::string flange_stop, lift_off_stop;
   for (int i = 0; i < roots.size(); ++i) {
     if (directions[size_t(i)] == 0) continue;
+    if (roots[i].kind == RootFunction::Kind::table_edge) {
+      // Only reaching the edge stops; coming back from it is no event.
+      if (directions[size_t(i)] < 0 && flange_stop.empty())
+        flange_stop = table_edge_message(model, roots, i, speed_m_per_s, t_s, x);
+      continue;
+    }
     if (roots[i].kind == RootFunction::Kind::flange_clearance) {
       if (flange_stop.empty()) flange_stop = flange_message(model, roots[i], t_s);
       continue;
@@ -202,8 +255,9 @@ Trajectory integrate(const Model& model, double speed_m_per_s, const Eigen::Vect
           throw std::runtime_error("time integration (" + integrator_name(options.kind) +
                                    "): root finding stalled at t = " +
                                    std::to_string(outcome.t_reached) + " s");
-        traj.stopped_early = handle_roots(model, roots, stepper->root_directions(),
-                                          outcome.t_reached, options, traj);
+        traj.stopped_early =
+            handle_roots(model, roots, stepper->root_directions(), outcome.t_reached, options,
+                         speed_m_per_s, stepper->state(), traj);
         if (traj.stopped_early.empty()) continue;  // an event only: go on to t_out
       }
       traj.times_s.push_back(outcome.t_reached);

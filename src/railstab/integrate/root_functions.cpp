@@ -3,6 +3,9 @@
 #include <railstab/contact/wheel_rail.hpp>
 #include <railstab/model/equations_of_motion.hpp>
 
+#include <algorithm>
+#include <cmath>
+
 namespace railstab {
 
 RootFunctionSet::RootFunctionSet(const Model& model, double speed_m_per_s)
@@ -13,8 +16,19 @@ RootFunctionSet::RootFunctionSet(const Model& model, double speed_m_per_s)
     const int contact = body.wheelset()->contact;
     // Profile (or table) contact has its flange: no validity limit to stop
     // at, and its contact points come and go smoothly (Hertz, C1 at zero
-    // overlap; the table's slots) without events.
-    if (uses_contact_table(model.contacts[size_t(contact)].spec.geometry)) continue;
+    // overlap; the table's slots) without events; the run stops only where
+    // a wheel reaches the edge of its table.
+    if (uses_contact_table(model.contacts[size_t(contact)].spec.geometry)) {
+      for (int side : {1, -1}) {
+        RootFunction f;
+        f.kind = RootFunction::Kind::table_edge;
+        f.body = b;
+        f.side = side;
+        functions_.push_back(f);
+      }
+      has_wheels_ = true;
+      continue;
+    }
     const int k = body.state_index[int(CoordinateIndex::y)];
     if (k >= 0) {
       RootFunction f;
@@ -54,6 +68,12 @@ void RootFunctionSet::evaluate(double t_s, const Eigen::Ref<const Eigen::VectorX
   else if (irregular) ws.update_frames(*model_, t_s, speed_m_per_s_);
   for (size_t i = 0; i < functions_.size(); ++i) {
     const RootFunction& f = functions_[i];
+    if (f.kind == RootFunction::Kind::table_edge) {
+      const TablePosition p = table_position_in(ws, f);
+      g[i] = kTableEdgeFraction - std::max(std::abs(p.lateral_m) / p.half_range_m,
+                                           std::abs(p.roll_rad) / p.roll_half_range_rad);
+      continue;
+    }
     if (f.kind == RootFunction::Kind::flange_clearance) {
       const double y = x(f.state), c = f.clearance_m;
       if (irregular) {
@@ -84,6 +104,34 @@ void RootFunctionSet::evaluate(double t_s, const Eigen::Ref<const Eigen::VectorX
       g[i] = penetration != 0.0 ? penetration : -1e-20;
     }
   }
+}
+
+RootFunctionSet::TablePosition RootFunctionSet::table_position_in(const Workspace<double>& ws,
+                                                                  const RootFunction& f) const {
+  const ModelContact& c = model_->contacts[size_t(model_->bodies[size_t(f.body)].wheelset()->contact)];
+  const ProfileContactGeometry& pg = *c.spec.profile_geometry;
+  const BodyMotion<double>& m = ws.motions[size_t(f.body)];
+  // As the contact sees it (wheel_rail.hpp): the wheelset from this rail.
+  const RailDisplacement& rail = m.track->rail(f.side);
+  const WheelPoseOf<double> pose = wheel_pose_in_rail_frame<double>(
+      pg.pair, f.side, m.q(1) - rail.lateral_m, m.q(2) - rail.vertical_m, m.q(3));
+  const WheelPoseOf<double> centred = wheel_pose_in_rail_frame<double>(
+      pg.pair, f.side, 0.0, pg.pair.parameters.nominal_rolling_radius_m, 0.0);
+  const ContactTable& table = pg.table_for(f.side);
+  TablePosition p;
+  p.lateral_m = pose.lateral_m - table.nominal_lateral_m();
+  p.half_range_m = table.options().lateral_half_range_m;
+  p.roll_rad = pose.roll_rad;
+  p.roll_half_range_rad = table.options().roll_half_range_rad;
+  p.lift_m = pose.vertical_m - centred.vertical_m;
+  return p;
+}
+
+RootFunctionSet::TablePosition RootFunctionSet::table_position(
+    int i, double t_s, const Eigen::Ref<const Eigen::VectorXd>& x) const {
+  Workspace<double> ws;
+  compute_all_body_motions<double>(*model_, ws, t_s, speed_m_per_s_, x);
+  return table_position_in(ws, functions_[size_t(i)]);
 }
 
 std::string RootFunctionSet::wheel_name(int i) const {
