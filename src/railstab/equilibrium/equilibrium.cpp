@@ -4,6 +4,7 @@
 #include <railstab/equilibrium/pseudo_transient.hpp>
 #include <railstab/linear/jacobian.hpp>
 #include <railstab/model/equations_of_motion.hpp>
+#include <railstab/model/workspace.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -92,6 +93,29 @@ Eigen::VectorXd lowered_nominal_state(const Model& model, double speed_m_per_s) 
                                                                body.nominal_q(int(CoordinateIndex::z))));
   for (int k = 0; k < model.n_coordinates; ++k)
     if (model.coordinate_of_state[k].second == int(CoordinateIndex::z)) guess(k) -= lowering;
+  // On irregular track each wheelset is set onto its own displaced rails
+  // (at t = 0): their mean lateral and vertical displacement and the roll of
+  // their cross level over the rail contact distance. A wheelset left at the
+  // design height can hang in the air over a dip of several mm, where no
+  // contact force, and so no Jacobian, pulls Newton towards the rail.
+  if (model.track.irregularities() != nullptr) {
+    Workspace<double> ws;
+    ws.update_frames(model, 0.0, speed_m_per_s);
+    const double D = model.track.spec().rail_contact_distance_m;
+    for (size_t b = 0; b < model.bodies.size(); ++b) {
+      const Body& body = model.bodies[b];
+      if (!body.wheelset()) continue;
+      const RailDisplacement& left = ws.frames[b].rail(+1);
+      const RailDisplacement& right = ws.frames[b].rail(-1);
+      const double shift[3] = {0.5 * (left.lateral_m + right.lateral_m),
+                               0.5 * (left.vertical_m + right.vertical_m),
+                               (left.vertical_m - right.vertical_m) / D};
+      const CoordinateIndex coordinate[3] = {CoordinateIndex::y, CoordinateIndex::z,
+                                             CoordinateIndex::roll};
+      for (int c = 0; c < 3; ++c)
+        if (const int k = body.state_index[int(coordinate[c])]; k >= 0) guess(k) += shift[c];
+    }
+  }
   return guess;
 }
 

@@ -76,7 +76,9 @@ RhsJacobianPlan equilibrium_jacobian_plan(const Model& model,
 // element internal states zero.
 Eigen::VectorXd nominal_state(const Model& model, double speed_m_per_s);
 // The nominal state lowered by 0.1 mm so every wheel starts in contact (the
-// Hertz stiffness is zero at zero penetration): the Newton start.
+// Hertz stiffness is zero at zero penetration): the Newton start. On
+// irregular track every wheelset also follows its rails' displacement at
+// t = 0 (their mean shift and height, the roll of the cross level).
 Eigen::VectorXd lowered_nominal_state(const Model& model, double speed_m_per_s);
 
 // The scene's initial state: nominal state plus the bodies' initial offsets
