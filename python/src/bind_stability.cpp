@@ -1,0 +1,252 @@
+// critical_speed, eigen, equilibrium and sensitivity: each prepares the
+// scene and calls the library as its command does (src/cli/
+// stability_commands.cpp, sensitivity_command.cpp), without the GIL; the
+// command's writers render the JSON (written_files.hpp); the numbers behind
+// it come back as numpy arrays at full precision.
+#include "arguments.hpp"
+#include "bindings.hpp"
+#include "numpy_arrays.hpp"
+#include "progress_relay.hpp"
+#include "written_files.hpp"
+
+#include <railstab/io/file_names.hpp>
+#include <railstab/nonlinear/hopf_assessment.hpp>
+#include <railstab/report/eigen_report.hpp>
+#include <railstab/report/equilibrium_report.hpp>
+#include <railstab/report/run_conditions.hpp>
+#include <railstab/report/sensitivity_report.hpp>
+#include <railstab/report/stability_report.hpp>
+#include <railstab/sensitivity/sensitivity_run.hpp>
+#include <railstab/stability/point_mode_shapes.hpp>
+#include <railstab/stability/speed_analysis.hpp>
+
+#include <pybind11/stl.h>
+
+#include <optional>
+
+namespace py = pybind11;
+
+namespace railstab::python {
+
+namespace {
+
+// The eigen-analysis over the grid as the eigenvalue CSV's columns, one row
+// per (speed, mode): speed, mode_track (the same mode across speeds),
+// eigenvalue (complex), frequency, damping ratio, neutral, residual, name.
+py::dict eigenvalue_table(const CriticalSpeedResult& r) {
+  std::vector<double> speed, frequency, damping, residual;
+  std::vector<std::complex<double>> eigenvalue;
+  std::vector<int> track;
+  std::vector<bool> neutral;
+  py::list names;
+  for (std::size_t i = 0; i < r.grid.size(); ++i)
+    for (std::size_t j = 0; j < r.grid[i].modes.size(); ++j) {
+      const ModeReport& m = r.grid[i].modes[j];
+      speed.push_back(r.grid[i].speed_m_per_s);
+      track.push_back(r.mode_tracks[i][j]);
+      eigenvalue.push_back(m.eigenvalue);
+      frequency.push_back(m.frequency_hz);
+      damping.push_back(m.damping_ratio);
+      neutral.push_back(m.neutral);
+      residual.push_back(m.residual);
+      names.append(m.name);
+    }
+  py::array_t<bool> neutral_array(py::ssize_t(neutral.size()));
+  for (std::size_t k = 0; k < neutral.size(); ++k) neutral_array.mutable_at(k) = neutral[k];
+  py::dict t;
+  t["speed_m_per_s"] = array_of(speed);
+  t["mode_track"] = array_of(track);
+  t["eigenvalue_per_s"] = array_of(eigenvalue);
+  t["frequency_Hz"] = array_of(frequency);
+  t["damping_ratio"] = array_of(damping);
+  t["neutral"] = neutral_array;
+  t["residual"] = array_of(residual);
+  t["name"] = names;
+  return t;
+}
+
+py::dict gradient_of(const CriticalSpeedSensitivities& s) {
+  py::dict g;
+  for (const ParameterSensitivity& p : s.parameters) g[py::str(p.key)] = p.critical_speed_derivative;
+  return g;
+}
+
+py::dict critical_speed(const std::string& scene, const std::vector<std::string>& settings,
+                        std::optional<double> arc_length, double from, double to, double step,
+                        const std::string& solver, double hunting_band,
+                        std::optional<double> min_damping_ratio,
+                        std::optional<std::vector<std::string>> gradient, py::object progress) {
+  check_speed_grid(from, to, step);
+  check_in("hunting_band", hunting_band, flag_ranges::frequency_hz);
+  check_in("min_damping_ratio", min_damping_ratio, flag_ranges::damping_ratio);
+  const SceneOverrides overrides = scene_overrides(settings, std::nullopt, arc_length);
+  CriticalSpeedOptions opt;
+  opt.from_m_per_s = from;
+  opt.to_m_per_s = to;
+  opt.grid_step_m_per_s = step;
+  opt.stability.solver = solver_named(solver);
+  opt.stability.max_frequency_hz = hunting_band;
+  if (min_damping_ratio) opt.min_damping_ratio = *min_damping_ratio;
+  if (gradient && (solver != "auto" || min_damping_ratio))
+    throw std::invalid_argument(
+        "gradient: the derivative comes from the sensitivity analysis's own search (solver "
+        "'auto', no damping-ratio limit); call without solver and min_damping_ratio");
+  ProgressRelay relay(progress);
+  opt.progress = relay.lines();
+  std::optional<PreparedScene> s;
+  CriticalSpeedResult r;
+  std::optional<SensitivityRun> sensitivity;
+  HopfAssessment hopf;
+  WrittenFiles files;
+  {
+    py::gil_scoped_release no_gil;
+    s.emplace(prepare_scene(scene, overrides));
+    if (gradient) {
+      // The sensitivity command's search (to 1e-6 m/s) and derivative: the
+      // result is that search, so value and gradient belong together.
+      SensitivityRunOptions so;
+      so.keys = *gradient;
+      so.from_m_per_s = from;
+      so.to_m_per_s = to;
+      so.grid_step_m_per_s = step;
+      so.hunting_band_hz = hunting_band;
+      so.progress = opt.progress;
+      so.keys_name = "gradient key";
+      so.range_name = "from_/to";
+      sensitivity.emplace(run_sensitivity(*s, so));
+      r = sensitivity->search;
+    } else {
+      r = find_critical_speed(s->model, s->equilibrium.state, s->speed_m_per_s, opt);
+    }
+    hopf = assess_hopf(s->model, r);
+    const std::string solver_used = r.grid.empty() ? solver : eigen_solver_name(r.grid.front().solver_used);
+    files = write_and_read([&](OutputSet& outputs) {
+      write_stability_results(s->model, r, outputs, steady_state_file_stem(s->model), solver_used,
+                              false, hunting_band, &hopf);
+    });
+  }
+  relay.rethrow();
+  py::dict out;
+  out["json"] = files.ending_with("_critical_speed.json");
+  out["eigenvalues"] = eigenvalue_table(r);
+  if (sensitivity) out["gradient"] = gradient_of(sensitivity->sensitivities);
+  return out;
+}
+
+py::dict eigen(const std::string& scene, const std::vector<std::string>& settings,
+               std::optional<double> speed, std::optional<double> arc_length,
+               const std::string& solver, double hunting_band) {
+  check_in("hunting_band", hunting_band, flag_ranges::frequency_hz);
+  const SceneOverrides overrides = scene_overrides(settings, speed, arc_length);
+  StabilityOptions o;
+  o.solver = solver_named(solver);
+  o.max_frequency_hz = hunting_band;
+  std::optional<PreparedScene> s;
+  std::optional<StabilityPoint> p;
+  WrittenFiles files;
+  {
+    py::gil_scoped_release no_gil;
+    s.emplace(prepare_scene(scene, overrides));
+    SpeedStability stability(s->model, s->equilibrium.state, s->speed_m_per_s, o);
+    p.emplace(stability.at(s->speed_m_per_s));
+    files = write_and_read([&](OutputSet& outputs) {
+      write_eigen_json(s->model, *p, full_mode_shapes(s->model, *p), outputs,
+                       steady_state_file_stem(s->model));
+    });
+  }
+  const std::size_t n = p->modes.size();
+  std::vector<std::complex<double>> eigenvalues;
+  std::vector<double> frequency, damping;
+  py::list names;
+  Eigen::MatrixXcd vectors(p->linear.states(), Eigen::Index(n));
+  for (std::size_t k = 0; k < n; ++k) {
+    const ModeReport& m = p->modes[k];
+    eigenvalues.push_back(m.eigenvalue);
+    frequency.push_back(m.frequency_hz);
+    damping.push_back(m.damping_ratio);
+    names.append(m.name);
+    if (m.vector.size() == vectors.rows()) vectors.col(Eigen::Index(k)) = m.vector;
+    else vectors.col(Eigen::Index(k)).setConstant(std::complex<double>(NAN, NAN));
+  }
+  py::dict out;
+  out["json"] = files.ending_with(".json");
+  out["eigenvalues"] = array_of(eigenvalues);
+  out["frequency_Hz"] = array_of(frequency);
+  out["damping_ratio"] = array_of(damping);
+  out["mode_names"] = names;
+  out["eigenvectors"] = array_of(vectors);
+  out["state_names"] = py::cast(p->linear.state_names);
+  if (p->linear.A.size() > 0) out["state_matrix"] = array_of(p->linear.A);
+  return out;
+}
+
+py::dict equilibrium(const std::string& scene, const std::vector<std::string>& settings,
+                     std::optional<double> speed, std::optional<double> arc_length) {
+  const SceneOverrides overrides = scene_overrides(settings, speed, arc_length);
+  std::optional<PreparedScene> s;
+  WrittenFiles files;
+  {
+    py::gil_scoped_release no_gil;
+    s.emplace(prepare_scene(scene, overrides));
+    files = write_and_read([&](OutputSet& outputs) {
+      write_equilibrium_results(*s, outputs, steady_state_file_stem(s->model));
+    });
+  }
+  py::dict out;
+  out["json"] = files.ending_with(".json");
+  out["state"] = array_of(std::vector<double>(s->equilibrium.state.data(),
+                                              s->equilibrium.state.data() + s->equilibrium.state.size()));
+  return out;
+}
+
+py::dict sensitivity(const std::string& scene, const std::vector<std::string>& settings,
+                     std::vector<std::string> keys, double from, double to, double step,
+                     double hunting_band, py::object progress) {
+  check_speed_grid(from, to, step);
+  check_in("hunting_band", hunting_band, flag_ranges::frequency_hz);
+  const SceneOverrides overrides = scene_overrides(settings, std::nullopt, std::nullopt);
+  ProgressRelay relay(progress);
+  SensitivityRunOptions o;
+  o.keys = std::move(keys);
+  o.from_m_per_s = from;
+  o.to_m_per_s = to;
+  o.grid_step_m_per_s = step;
+  o.hunting_band_hz = hunting_band;
+  o.progress = relay.lines();
+  o.keys_name = "key";
+  o.range_name = "from_/to";
+  std::optional<SensitivityRun> run;
+  WrittenFiles files;
+  {
+    py::gil_scoped_release no_gil;
+    const PreparedScene s = prepare_scene(scene, overrides);
+    run.emplace(run_sensitivity(s, o));
+    // The command's context: the scene path as given, 20 bars (the plot's,
+    // unused without plots).
+    SensitivityReportContext c{s.spec.name, scene, run->mode.name, run->mode.frequency_hz, 20};
+    files = write_and_read([&](OutputSet& outputs) {
+      write_sensitivity_results(run->sensitivities, c, outputs, file_stem(s.spec.name), false);
+    });
+  }
+  relay.rethrow();
+  py::dict out;
+  out["json"] = files.ending_with(".json");
+  out["gradient"] = gradient_of(run->sensitivities);
+  return out;
+}
+
+}  // namespace
+
+void bind_stability(py::module_& m) {
+  using py::arg;
+  m.def("critical_speed", &critical_speed, arg("scene"), arg("settings"), arg("arc_length"),
+        arg("from_"), arg("to"), arg("step"), arg("solver"), arg("hunting_band"),
+        arg("min_damping_ratio"), arg("gradient"), arg("progress"));
+  m.def("eigen", &eigen, arg("scene"), arg("settings"), arg("speed"), arg("arc_length"),
+        arg("solver"), arg("hunting_band"));
+  m.def("equilibrium", &equilibrium, arg("scene"), arg("settings"), arg("speed"), arg("arc_length"));
+  m.def("sensitivity", &sensitivity, arg("scene"), arg("settings"), arg("keys"), arg("from_"),
+        arg("to"), arg("step"), arg("hunting_band"), arg("progress"));
+}
+
+}  // namespace railstab::python
