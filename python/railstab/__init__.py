@@ -109,9 +109,9 @@ def _settings_dict(settings):
     return dict(settings)
 
 
-def _scene_and_settings(scene, settings):
-    """(path, ["KEY=VALUE", ...]): the scene's own overrides, then the call's
-    (a later setting of a key wins, as repeated --set)."""
+def _scene_and_overrides(scene, settings):
+    """(path, {key: value}): the scene's own overrides, then the call's (a
+    later setting of a key wins, as a repeated --set)."""
     if isinstance(scene, Scene):
         merged = dict(scene.set)
         path = scene.path
@@ -122,6 +122,12 @@ def _scene_and_settings(scene, settings):
         raise InputError("scene: expected a scene file path or a railstab.Scene, got "
                          + type(scene).__name__)
     merged.update(_settings_dict(settings))
+    return path, merged
+
+
+def _scene_and_settings(scene, settings):
+    """(path, ["KEY=VALUE", ...]): the overrides in --set's form."""
+    path, merged = _scene_and_overrides(scene, settings)
     return path, [f"{k}={_number_text(v)}" for k, v in merged.items()]
 
 
@@ -162,8 +168,9 @@ def load_scene(path, set=None):
     Raises InputError naming the file, the key and what was expected, as the
     command line does.
     """
-    path, settings = _scene_and_settings(path, set)
-    return Scene(path, _settings_dict(set), _railstab.load_scene(path, settings))
+    path, merged = _scene_and_overrides(path, set)
+    _, settings = _scene_and_settings(path, merged)
+    return Scene(path, merged, _railstab.load_scene(path, settings))
 
 
 def critical_speed(scene, set=None, *, from_=5.0, to=150.0, step=2.5, solver="auto",
@@ -356,6 +363,8 @@ def study(scene, vary, set=None, *, from_=5.0, to=150.0, step=2.5, solver="auto"
     texts = [_vary_text(k, v) for k, v in vary.items()]
     if jobs is None:
         jobs = os.cpu_count() or 1
+    if isinstance(jobs, bool) or not isinstance(jobs, numbers.Integral) or not 1 <= jobs <= 1024:
+        raise InputError(f"jobs: expected a whole number of threads in [1, 1024], got {jobs!r}")
     if dataframe:
         try:
             import pandas

@@ -75,6 +75,7 @@ def test_broken_scene_file_as_the_cli_says(cli, tmp_path):
     (lambda: railstab.equilibrium(42), "scene: expected a scene file path"),
     (lambda: railstab.study(WHEELSET, {"bodies.wheelset1.mass_kg": (1, 2)}), "vary: bodies.wheelset1.mass_kg: expected (from, to, step)"),
     (lambda: railstab.study(WHEELSET, {"bodies.wheelset1.mass_kg": (2, 1, 1)}), "vary:"),
+    (lambda: railstab.study(WHEELSET, {"bodies.wheelset1.mass_kg": (1000, 2000, 500)}, jobs=0), "jobs: expected a whole number"),
     (lambda: railstab.contact_geometry(WHEELSET), "expected exactly one contact with geometry"),
     (lambda: railstab.bifurcation(WHEELSET, hopf_branch=False), "hopf_branch=False leaves no branch"),
 ])

@@ -15,6 +15,12 @@ def test_load_scene():
     assert s.bodies == ["wheelset1", "wheelset2", "bogie1"]
     assert s.parameters["bodies.bogie1.mass_kg"] > 0
     assert repr(s) == f"railstab.Scene({BOGIE!r})"
+    # A Scene read from a Scene keeps the first one's overrides under the new ones.
+    key = "bodies.bogie1.mass_kg"
+    s1 = railstab.load_scene(BOGIE, set={key: 2000.0})
+    s2 = railstab.load_scene(s1, set={"bodies.wheelset1.mass_kg": 1400.0})
+    assert s2.set == {key: 2000.0, "bodies.wheelset1.mass_kg": 1400.0}
+    assert s2.parameters[key] == 2000.0 and s2.parameters["bodies.wheelset1.mass_kg"] == 1400.0
 
 
 def test_contact_geometry_equals_the_command(cli):
