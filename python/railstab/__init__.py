@@ -20,7 +20,9 @@ checked against the same ranges.
 
 Errors raise :class:`InputError` (also a ValueError: a scene file's key, an
 argument out of range; the message is the command line's) or :class:`Error`
-(also a RuntimeError: the analysis failed). The analyses run without the GIL:
+(also a RuntimeError: the analysis failed). The model check's warnings,
+which the command prints before an analysis, are issued as
+:class:`ModelWarning` and kept in ``result.model_warnings``. The analyses run without the GIL:
 Python threads run them side by side. ``progress`` takes a callable that gets
 the command's progress lines (simulate: the simulated time in s); an exception
 it raises stops its calls and is raised when the analysis returns.
@@ -33,13 +35,14 @@ import json
 import math
 import numbers
 import os
+import warnings
 
 import numpy as np
 
 from railstab import _railstab
 from railstab._railstab import Error, InputError
 
-__all__ = ["Error", "InputError", "Result", "Scene", "load_scene", "critical_speed", "eigen",
+__all__ = ["Error", "InputError", "ModelWarning", "Result", "Scene", "load_scene", "critical_speed", "eigen",
            "equilibrium", "simulate", "verify", "sensitivity", "contact_geometry", "study",
            "bifurcation"]
 __version__ = _railstab.__version__
@@ -158,8 +161,18 @@ def _table(csv_text):
     return {name: _column([row[i] for row in body]) for i, name in enumerate(header)}
 
 
+class ModelWarning(UserWarning):
+    """The model check's warning about a scene (a wheelset placed off its
+    rails, a spring far from its length, an unusual mass...), as the command
+    line prints it before an analysis; also in the result's model_warnings."""
+
+
 def _result(out):
-    return Result(json.loads(out["json"]))
+    r = Result(json.loads(out["json"]))
+    r.model_warnings = list(out.get("model_warnings", []))
+    for message in r.model_warnings:
+        warnings.warn(message, ModelWarning, stacklevel=3)
+    return r
 
 
 def load_scene(path, set=None):

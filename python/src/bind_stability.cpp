@@ -6,6 +6,7 @@
 #include "arguments.hpp"
 #include "bindings.hpp"
 #include "numpy_arrays.hpp"
+#include "model_warnings.hpp"
 #include "progress_relay.hpp"
 #include "written_files.hpp"
 
@@ -98,9 +99,11 @@ py::dict critical_speed(const std::string& scene, const std::vector<std::string>
   std::optional<SensitivityRun> sensitivity;
   HopfAssessment hopf;
   WrittenFiles files;
+  std::vector<std::string> warnings;
   {
     py::gil_scoped_release no_gil;
     s.emplace(prepare_scene(scene, overrides));
+    warnings = model_warnings(*s);
     if (gradient) {
       // The sensitivity command's search (to 1e-6 m/s) and derivative: the
       // result is that search, so value and gradient belong together.
@@ -130,6 +133,7 @@ py::dict critical_speed(const std::string& scene, const std::vector<std::string>
   out["json"] = files.ending_with("_critical_speed.json");
   out["eigenvalues"] = eigenvalue_table(r);
   if (sensitivity) out["gradient"] = gradient_of(sensitivity->sensitivities);
+  out["model_warnings"] = py::cast(warnings);
   return out;
 }
 
@@ -144,9 +148,11 @@ py::dict eigen(const std::string& scene, const std::vector<std::string>& setting
   std::optional<PreparedScene> s;
   std::optional<StabilityPoint> p;
   WrittenFiles files;
+  std::vector<std::string> warnings;
   {
     py::gil_scoped_release no_gil;
     s.emplace(prepare_scene(scene, overrides));
+    warnings = model_warnings(*s);
     SpeedStability stability(s->model, s->equilibrium.state, s->speed_m_per_s, o);
     p.emplace(stability.at(s->speed_m_per_s));
     files = write_and_read([&](OutputSet& outputs) {
@@ -177,6 +183,7 @@ py::dict eigen(const std::string& scene, const std::vector<std::string>& setting
   out["eigenvectors"] = array_of(vectors);
   out["state_names"] = py::cast(p->linear.state_names);
   if (p->linear.A.size() > 0) out["state_matrix"] = array_of(p->linear.A);
+  out["model_warnings"] = py::cast(warnings);
   return out;
 }
 
@@ -185,9 +192,11 @@ py::dict equilibrium(const std::string& scene, const std::vector<std::string>& s
   const SceneOverrides overrides = scene_overrides(settings, speed, arc_length);
   std::optional<PreparedScene> s;
   WrittenFiles files;
+  std::vector<std::string> warnings;
   {
     py::gil_scoped_release no_gil;
     s.emplace(prepare_scene(scene, overrides));
+    warnings = model_warnings(*s);
     files = write_and_read([&](OutputSet& outputs) {
       write_equilibrium_results(*s, outputs, steady_state_file_stem(s->model));
     });
@@ -196,6 +205,7 @@ py::dict equilibrium(const std::string& scene, const std::vector<std::string>& s
   out["json"] = files.ending_with(".json");
   out["state"] = array_of(std::vector<double>(s->equilibrium.state.data(),
                                               s->equilibrium.state.data() + s->equilibrium.state.size()));
+  out["model_warnings"] = py::cast(warnings);
   return out;
 }
 
@@ -217,9 +227,11 @@ py::dict sensitivity(const std::string& scene, const std::vector<std::string>& s
   o.range_name = "from_/to";
   std::optional<SensitivityRun> run;
   WrittenFiles files;
+  std::vector<std::string> warnings;
   {
     py::gil_scoped_release no_gil;
     const PreparedScene s = prepare_scene(scene, overrides);
+    warnings = model_warnings(s);
     run.emplace(run_sensitivity(s, o));
     // The command's context: the scene path as given, 20 bars (the plot's,
     // unused without plots).
@@ -232,6 +244,7 @@ py::dict sensitivity(const std::string& scene, const std::vector<std::string>& s
   py::dict out;
   out["json"] = files.ending_with(".json");
   out["gradient"] = gradient_of(run->sensitivities);
+  out["model_warnings"] = py::cast(warnings);
   return out;
 }
 

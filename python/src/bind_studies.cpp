@@ -4,6 +4,7 @@
 // commands' own writers (written_files.hpp).
 #include "arguments.hpp"
 #include "bindings.hpp"
+#include "model_warnings.hpp"
 #include "progress_relay.hpp"
 #include "written_files.hpp"
 
@@ -164,9 +165,11 @@ py::dict bifurcation(const std::string& scene, const std::vector<std::string>& s
   ProgressRelay relay(progress);
   o.progress = relay.lines();
   WrittenFiles files;
+  std::vector<std::string> warnings;
   {
     py::gil_scoped_release no_gil;
     const PreparedScene s = prepare_scene(scene, overrides);
+    warnings = model_warnings(s);
     const BifurcationResult r = analyse_bifurcation(s.model, s.equilibrium.state, s.speed_m_per_s, o);
     BifurcationRunInfo info;
     info.eigen_solver = solver;
@@ -180,6 +183,7 @@ py::dict bifurcation(const std::string& scene, const std::vector<std::string>& s
   py::dict out;
   out["json"] = files.ending_with("_bifurcation.json");
   out["csv"] = files.ending_with("_bifurcation_branches.csv");
+  out["model_warnings"] = py::cast(warnings);
   return out;
 }
 

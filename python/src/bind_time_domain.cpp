@@ -5,6 +5,7 @@
 // (read back, the same doubles) and parsed by the Python layer.
 #include "arguments.hpp"
 #include "bindings.hpp"
+#include "model_warnings.hpp"
 #include "progress_relay.hpp"
 
 #include <railstab/check/run_check.hpp>
@@ -71,9 +72,11 @@ py::dict simulate(const std::string& scene, const std::vector<std::string>& sett
   ProgressRelay relay(progress);
   std::string summary, trajectory_csv, roll_csv, forces_csv, accelerations_csv;
   std::vector<std::string> warning_texts;
+  std::vector<std::string> warnings;
   {
     py::gil_scoped_release no_gil;
     const PreparedScene s = prepare_scene(scene, overrides);
+    warnings = model_warnings(s);
     IntegrationOptions opt = integration_options_for(s.spec.simulation);
     if (variant) {
       opt.kind = variant->kind;
@@ -125,6 +128,7 @@ py::dict simulate(const std::string& scene, const std::vector<std::string>& sett
   out["wheel_forces_csv"] = forces_csv;
   out["accelerations_csv"] = accelerations_csv;
   out["warnings"] = py::cast(warning_texts);
+  out["model_warnings"] = py::cast(warnings);
   return out;
 }
 
@@ -147,9 +151,11 @@ py::dict verify(const std::string& scene, const std::vector<std::string>& settin
   SceneOverrides overrides = scene_overrides(settings, speed, arc_length, offsets);
   overrides.apply_track_irregularities = true;  // as `verify` (a time-domain command)
   std::string json;
+  std::vector<std::string> warnings;
   {
     py::gil_scoped_release no_gil;
     const PreparedScene s = prepare_scene(scene, overrides);
+    warnings = model_warnings(s);
     VerificationOptions options;
     options.amplitude_m = amplitude;
     options.periods = periods;
@@ -176,6 +182,7 @@ py::dict verify(const std::string& scene, const std::vector<std::string>& settin
   }
   py::dict out;
   out["json"] = json;
+  out["model_warnings"] = py::cast(warnings);
   return out;
 }
 

@@ -101,3 +101,14 @@ def test_progress_callback_errors_reach_the_caller():
         railstab.critical_speed(WHEELSET, from_=20, to=40, step=10, progress=broken)
     with pytest.raises(TypeError, match="progress: expected a callable"):
         railstab.critical_speed(WHEELSET, progress=3)
+
+
+def test_model_warnings_as_the_cli_prints_them(cli):
+    key = "bodies.bogie1.mass_kg"
+    with pytest.warns(railstab.ModelWarning) as caught:
+        r = railstab.equilibrium(case("textbook_bogie.toml"), set={key: 100})
+    run = cli("equilibrium", case("textbook_bogie.toml"), "--set", f"{key}=100")
+    printed = [line[len("warning: "):] for line in run.stderr.splitlines()
+               if line.startswith("warning: ")]
+    assert r.model_warnings == printed == [str(w.message) for w in caught]
+    assert "mass_kg = 100 is outside" in r.model_warnings[0]
