@@ -188,7 +188,7 @@ def load_scene(path, set=None):
 
 def critical_speed(scene, set=None, *, from_=5.0, to=150.0, step=2.5, solver="auto",
                    hunting_band=20.0, min_damping_ratio=None, arc_length=None, gradient=None,
-                   progress=None):
+                   amplitude=None, progress=None):
     """The critical (hunting) speed: ``railstab critical-speed``.
 
     Returns the critical-speed JSON as a Result, plus
@@ -206,11 +206,14 @@ def critical_speed(scene, set=None, *, from_=5.0, to=150.0, step=2.5, solver="au
                     sensitivity`` computes; the search is then that command's
                     (bisection to 1e-6 m/s instead of 0.01), so the value and
                     its gradient belong together (for scipy.optimize).
+    ``amplitude`` (m): the quasi-linear critical speed, the profile contacts
+    replaced by their harmonic linearisation at that wheelset amplitude
+    (``--amplitude``; the JSON's ``quasi_linear`` object).
     """
     path, settings = _scene_and_settings(scene, set)
     keys = None if gradient is None else [str(k) for k in gradient]
     out = _railstab.critical_speed(path, settings, arc_length, from_, to, step, solver,
-                                   hunting_band, min_damping_ratio, keys, progress)
+                                   hunting_band, min_damping_ratio, keys, amplitude, progress)
     r = _result(out)
     table = out["eigenvalues"]
     r.eigenvalue_table = table

@@ -19,6 +19,7 @@
 #include <railstab/report/stability_report.hpp>
 #include <railstab/sensitivity/sensitivity_run.hpp>
 #include <railstab/stability/point_mode_shapes.hpp>
+#include <railstab/stability/quasi_linear_critical_speed.hpp>
 #include <railstab/stability/speed_analysis.hpp>
 
 #include <pybind11/stl.h>
@@ -76,10 +77,15 @@ py::dict critical_speed(const std::string& scene, const std::vector<std::string>
                         std::optional<double> arc_length, double from, double to, double step,
                         const std::string& solver, double hunting_band,
                         std::optional<double> min_damping_ratio,
-                        std::optional<std::vector<std::string>> gradient, py::object progress) {
+                        std::optional<std::vector<std::string>> gradient,
+                        std::optional<double> amplitude, py::object progress) {
   check_speed_grid(from, to, step);
   check_in("hunting_band", hunting_band, flag_ranges::frequency_hz);
   check_in("min_damping_ratio", min_damping_ratio, flag_ranges::damping_ratio);
+  check_in("amplitude", amplitude, flag_ranges::wheelset_amplitude_m);
+  if (gradient && amplitude)
+    throw std::invalid_argument("gradient and amplitude: the gradient is of the linear model's "
+                                "critical speed; give one of them");
   const SceneOverrides overrides = scene_overrides(settings, std::nullopt, arc_length);
   CriticalSpeedOptions opt;
   opt.from_m_per_s = from;
@@ -98,6 +104,7 @@ py::dict critical_speed(const std::string& scene, const std::vector<std::string>
   CriticalSpeedResult r;
   std::optional<SensitivityRun> sensitivity;
   HopfAssessment hopf;
+  std::optional<QuasiLinearCriticalSpeed> quasi_linear;
   WrittenFiles files;
   std::vector<std::string> warnings;
   {
@@ -118,14 +125,34 @@ py::dict critical_speed(const std::string& scene, const std::vector<std::string>
       so.range_name = "from_/to";
       sensitivity.emplace(run_sensitivity(*s, so));
       r = sensitivity->search;
+    } else if (amplitude) {
+      // critical-speed --amplitude A: the profile contacts replaced by their
+      // harmonic linearisation at A (stability/quasi_linear_critical_speed.hpp).
+      const QuasiLinearModelBuilder builder(s->model, s->equilibrium.state);
+      const QuasiLinearModel q = [&] {
+        try {
+          return builder.at(*amplitude);
+        } catch (const std::invalid_argument& e) {
+          throw std::invalid_argument("amplitude: " + std::string(e.what()));
+        }
+      }();
+      quasi_linear.emplace();
+      quasi_linear->amplitude_m = *amplitude;
+      quasi_linear->wheelsets = q.wheelsets;
+      quasi_linear->has_profile_contact = q.has_profile_contact;
+      quasi_linear->result = find_critical_speed(q.model, s->equilibrium.state, s->speed_m_per_s, opt);
+      r = quasi_linear->result;
     } else {
       r = find_critical_speed(s->model, s->equilibrium.state, s->speed_m_per_s, opt);
     }
-    hopf = assess_hopf(s->model, r);
+    // The quasi-linear report has no Hopf assessment (as the command's).
+    if (!quasi_linear) hopf = assess_hopf(s->model, r);
     const std::string solver_used = r.grid.empty() ? solver : eigen_solver_name(r.grid.front().solver_used);
+    const std::string stem = steady_state_file_stem(s->model) + (quasi_linear ? "_quasi_linear" : "");
     files = write_and_read([&](OutputSet& outputs) {
-      write_stability_results(s->model, r, outputs, steady_state_file_stem(s->model), solver_used,
-                              false, hunting_band, &hopf);
+      write_stability_results(s->model, r, outputs, stem, solver_used, false, hunting_band,
+                              quasi_linear ? nullptr : &hopf,
+                              quasi_linear ? &*quasi_linear : nullptr);
     });
   }
   relay.rethrow();
@@ -254,7 +281,7 @@ void bind_stability(py::module_& m) {
   using py::arg;
   m.def("critical_speed", &critical_speed, arg("scene"), arg("settings"), arg("arc_length"),
         arg("from_"), arg("to"), arg("step"), arg("solver"), arg("hunting_band"),
-        arg("min_damping_ratio"), arg("gradient"), arg("progress"));
+        arg("min_damping_ratio"), arg("gradient"), arg("amplitude"), arg("progress"));
   m.def("eigen", &eigen, arg("scene"), arg("settings"), arg("speed"), arg("arc_length"),
         arg("solver"), arg("hunting_band"));
   m.def("equilibrium", &equilibrium, arg("scene"), arg("settings"), arg("speed"), arg("arc_length"));

@@ -75,3 +75,13 @@ def test_equilibrium_equals_the_command(cli):
     run = cli("equilibrium", BOGIE, "--speed", "30")
     assert_same_report(r, run.json("_equilibrium_30mps.json"))
     assert r.state.ndim == 1 and np.all(np.isfinite(r.state))
+
+
+def test_quasi_linear_critical_speed_equals_the_command(cli):
+    # The S1002 bogie's quasi-linear contact at 3 mm (critical-speed --amplitude).
+    scene = case("thesis_bogie_s1002_tangent.toml")
+    r = railstab.critical_speed(scene, amplitude=0.003, from_=20, to=60, step=5)
+    run = cli("critical-speed", scene, "--amplitude", "0.003", "--from", "20", "--to", "60",
+              "--step", "5", "--no-plots")
+    assert_same_report(r, run.json("_quasi_linear_critical_speed.json"))
+    assert r.quasi_linear["amplitude_m"] == 0.003
