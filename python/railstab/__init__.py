@@ -66,6 +66,13 @@ class Result(dict):
     def __dir__(self):
         return list(super().__dir__()) + list(self.keys())
 
+    def __setattr__(self, name, value):
+        # An array named like a report field would hide the field from
+        # attribute access: refused, so the two never disagree silently.
+        if name in self:
+            raise AttributeError(f"'{name}' is a field of the report; name the attribute otherwise")
+        super().__setattr__(name, value)
+
 
 class Scene:
     """A scene file read and checked with its overrides (see load_scene).
@@ -400,13 +407,14 @@ def bifurcation(scene, set=None, *, from_=5.0, to=150.0, step=2.5, cycle_speed=N
                 hunting_band=20.0, arc_length=None, progress=None):
     """Periodic hunting orbits and the nonlinear critical speed: ``railstab bifurcation``.
 
-    Returns the bifurcation JSON as a Result, plus
-      branches   the branches CSV's columns (one row per orbit) as arrays
+    Returns the bifurcation JSON as a Result (``branches``: each branch with
+    its orbits), plus
+      orbits     the branches CSV's columns (one row per orbit) as arrays
     """
     path, settings = _scene_and_settings(scene, set)
     out = _railstab.bifurcation(path, settings, arc_length, from_, to, step, cycle_speed,
                                 bool(hopf_branch), max_amplitude, int(max_orbits), solver,
                                 hunting_band, progress)
     r = _result(out)
-    r.branches = _table(out["csv"])
+    r.orbits = _table(out["csv"])
     return r

@@ -69,6 +69,6 @@ def test_bifurcation_equals_the_command(cli):
               "--no-plots")
     assert_same_report(r, run.json("_bifurcation.json"))
     rows = run.csv_rows("_bifurcation_branches.csv")
-    assert list(r.branches) == rows[0]
-    assert len(r.branches[rows[0][0]]) == len(rows) - 1
+    assert list(r.orbits) == rows[0]
+    assert len(r.orbits[rows[0][0]]) == len(rows) - 1
     assert lines
