@@ -23,19 +23,7 @@ void check_speed_grid(double from, double to, double step) {
   check_in("from_", from, flag_ranges::speed_m_per_s);
   check_in("to", to, flag_ranges::speed_m_per_s);
   check_in("step", step, flag_ranges::speed_step_m_per_s);
-  if (!(from < to)) {
-    std::ostringstream msg;
-    msg << "from_ " << from << " m/s must be below to " << to << " m/s";
-    throw std::invalid_argument(msg.str());
-  }
-  const double points = std::floor((to - from) / step) + 1.0;
-  if (!(points <= kMaxSpeedGridPoints)) {
-    std::ostringstream msg;
-    msg << "the speed grid from from_ " << from << " to to " << to << " m/s with step " << step
-        << " m/s would have " << points << " points; at most " << int(kMaxSpeedGridPoints)
-        << " (raise step or narrow the range)";
-    throw std::invalid_argument(msg.str());
-  }
+  railstab::check_speed_grid(from, to, step, {"from_", "to", "step"});
 }
 
 SceneOverrides scene_overrides(const std::vector<std::string>& settings,

@@ -67,6 +67,24 @@ py::dict eigenvalue_table(const CriticalSpeedResult& r) {
   return t;
 }
 
+// The sensitivity analysis's options from the Python keywords (the messages
+// name `keys_name` and from_/to).
+SensitivityRunOptions sensitivity_options(std::vector<std::string> keys, double from, double to,
+                                          double step, double hunting_band,
+                                          std::function<void(const std::string&)> progress,
+                                          const std::string& keys_name) {
+  SensitivityRunOptions o;
+  o.keys = std::move(keys);
+  o.from_m_per_s = from;
+  o.to_m_per_s = to;
+  o.grid_step_m_per_s = step;
+  o.hunting_band_hz = hunting_band;
+  o.progress = std::move(progress);
+  o.keys_name = keys_name;
+  o.range_name = "from_/to";
+  return o;
+}
+
 py::dict gradient_of(const CriticalSpeedSensitivities& s) {
   py::dict g;
   for (const ParameterSensitivity& p : s.parameters) g[py::str(p.key)] = p.critical_speed_derivative;
@@ -114,16 +132,8 @@ py::dict critical_speed(const std::string& scene, const std::vector<std::string>
     if (gradient) {
       // The sensitivity command's search (to 1e-6 m/s) and derivative: the
       // result is that search, so value and gradient belong together.
-      SensitivityRunOptions so;
-      so.keys = *gradient;
-      so.from_m_per_s = from;
-      so.to_m_per_s = to;
-      so.grid_step_m_per_s = step;
-      so.hunting_band_hz = hunting_band;
-      so.progress = opt.progress;
-      so.keys_name = "gradient key";
-      so.range_name = "from_/to";
-      sensitivity.emplace(run_sensitivity(*s, so));
+      sensitivity.emplace(run_sensitivity(
+          *s, sensitivity_options(*gradient, from, to, step, hunting_band, opt.progress, "gradient key")));
       r = sensitivity->search;
     } else if (amplitude) {
       // critical-speed --amplitude A: the profile contacts replaced by their
@@ -243,15 +253,8 @@ py::dict sensitivity(const std::string& scene, const std::vector<std::string>& s
   check_in("hunting_band", hunting_band, flag_ranges::frequency_hz);
   const SceneOverrides overrides = scene_overrides(settings, std::nullopt, std::nullopt);
   ProgressRelay relay(progress);
-  SensitivityRunOptions o;
-  o.keys = std::move(keys);
-  o.from_m_per_s = from;
-  o.to_m_per_s = to;
-  o.grid_step_m_per_s = step;
-  o.hunting_band_hz = hunting_band;
-  o.progress = relay.lines();
-  o.keys_name = "key";
-  o.range_name = "from_/to";
+  const SensitivityRunOptions o =
+      sensitivity_options(std::move(keys), from, to, step, hunting_band, relay.lines(), "key");
   std::optional<SensitivityRun> run;
   WrittenFiles files;
   std::vector<std::string> warnings;

@@ -54,8 +54,15 @@ inline const FlagRange damping_ratio{0.0, 1.0, true, true, ""};
 // a message instead of filling memory.
 inline constexpr double kMaxSpeedGridPoints = 10000.0;
 
+// How the caller's interface names the grid: the flags, or the Python
+// module's keywords (from_, to, step).
+struct SpeedGridNames {
+  std::string from = "--from", to = "--to", step = "--step";
+};
+
 // Throws std::invalid_argument naming the flags: --from must lie below --to,
 // and (to - from) / step + 1 at most kMaxSpeedGridPoints.
-void check_speed_grid(double from_m_per_s, double to_m_per_s, double step_m_per_s);
+void check_speed_grid(double from_m_per_s, double to_m_per_s, double step_m_per_s,
+                      const SpeedGridNames& names = {});
 
 }  // namespace railstab
