@@ -112,3 +112,28 @@ def test_model_warnings_as_the_cli_prints_them(cli):
                if line.startswith("warning: ")]
     assert r.model_warnings == printed == [str(w.message) for w in caught]
     assert "mass_kg = 100 is outside" in r.model_warnings[0]
+
+
+def test_hostile_scene_names_stay_in_the_private_folder(tmp_path, monkeypatch):
+    # The report is written into a temporary folder under the file-name rules
+    # (io/file_names.hpp): a scene called "../evil" or holding quotes and a
+    # comma writes nothing beside it, and the JSON keeps the name.
+    monkeypatch.setenv("TMPDIR", str(tmp_path / "tmp"))
+    (tmp_path / "tmp").mkdir()
+    text = pathlib.Path(WHEELSET).read_text()
+    for name in ("../evil", 'a "quoted", name', "/tmp/../../evil"):
+        escaped = name.replace("\\", "\\\\").replace('"', '\\"').replace("\n", "\\n")
+        scene = tmp_path / "scene.toml"
+        scene.write_text(text.replace('name = "textbook_wheelset"', f'name = "{escaped}"', 1))
+        r = railstab.equilibrium(str(scene))
+        assert r.scene == name
+        assert sorted(p.name for p in tmp_path.iterdir()) == ["scene.toml", "tmp"]
+        assert list((tmp_path / "tmp").iterdir()) == []  # the private folder is removed
+
+
+def test_a_named_pipe_is_refused_not_waited_on(tmp_path):
+    import os
+    fifo = tmp_path / "scene.toml"
+    os.mkfifo(fifo)
+    with pytest.raises(railstab.InputError, match="scene file"):
+        railstab.load_scene(str(fifo))
