@@ -48,3 +48,13 @@ def test_verify_equals_the_command(cli):
     run = cli("verify", WHEELSET, "--speed", "20", "--periods", "5", "--settle-periods", "1",
               "--no-plots")
     assert_same_report(r, run.json(".json"))
+
+
+def test_simulate_with_set_and_a_mode_start_equals_the_command(cli):
+    key = "bodies.wheelset1.mass_kg"
+    r = railstab.simulate(WHEELSET, set={key: 1400.0}, speed=60.0, t_end=0.3, mode="hunting",
+                          mode_amplitude=0.001, estimate_error=False)
+    run = cli("simulate", WHEELSET, "--set", f"{key}=1400", "--speed", "60", "--t-end", "0.3",
+              "--mode", "hunting", "--mode-amplitude", "0.001", "--no-error-estimate", "--no-plots")
+    assert_same_report(r, run.json("_run.json"))
+    assert r.start["mode"] and abs(r.channels["wheelset1.y_m"][0]) > 0
