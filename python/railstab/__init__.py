@@ -42,9 +42,9 @@ import numpy as np
 from railstab import _railstab
 from railstab._railstab import Error, InputError
 
-__all__ = ["Error", "InputError", "ModelWarning", "Result", "Scene", "load_scene", "critical_speed", "eigen",
-           "equilibrium", "simulate", "verify", "sensitivity", "contact_geometry", "study",
-           "bifurcation"]
+__all__ = ["Error", "InputError", "ModelWarning", "Result", "Scene", "load_scene", "check",
+           "critical_speed", "eigen", "equilibrium", "simulate", "verify", "sensitivity",
+           "contact_geometry", "study", "bifurcation"]
 __version__ = _railstab.__version__
 
 
@@ -191,6 +191,17 @@ def load_scene(path, set=None):
     path, merged = _scene_and_overrides(path, set)
     _, settings = _scene_and_settings(path, merged)
     return Scene(path, merged, _railstab.load_scene(path, settings))
+
+
+def check(scene, set=None, *, speed=None, arc_length=None, natural_frequencies=True):
+    """The model checks before a run: ``railstab check``.
+
+    Returns the check JSON as a Result (masses, axle loads, static
+    deflections, natural frequencies at rest, warnings, errors). The command
+    fails when ``errors`` is not empty; this returns the report all the same.
+    """
+    path, settings = _scene_and_settings(scene, set)
+    return _result(_railstab.check(path, settings, speed, arc_length, bool(natural_frequencies)))
 
 
 def critical_speed(scene, set=None, *, from_=5.0, to=150.0, step=2.5, solver="auto",

@@ -8,12 +8,14 @@
 #include "progress_relay.hpp"
 #include "written_files.hpp"
 
+#include <railstab/check/model_check.hpp>
 #include <railstab/contact_geometry/contact_geometry_summary.hpp>
 #include <railstab/contact_geometry/contact_table_file.hpp>
 #include <railstab/io/file_names.hpp>
 #include <railstab/nonlinear/bifurcation_analysis.hpp>
 #include <railstab/report/bifurcation_report.hpp>
 #include <railstab/report/contact_geometry_report.hpp>
+#include <railstab/report/model_check_report.hpp>
 #include <railstab/report/run_conditions.hpp>
 #include <railstab/report/study_report.hpp>
 #include <railstab/sensitivity/parameter_derivative.hpp>
@@ -55,6 +57,29 @@ py::dict load_scene(const std::string& scene, const std::vector<std::string>& se
   py::dict parameters;
   for (std::size_t i = 0; i < keys.size(); ++i) parameters[py::str(keys[i])] = values[i];
   out["parameters"] = parameters;
+  return out;
+}
+
+// `railstab check`: the model checks before a run. The command fails after
+// writing its report when a check is an error; here the report is returned
+// and its "errors" say so.
+py::dict check(const std::string& scene, const std::vector<std::string>& settings,
+               std::optional<double> speed, std::optional<double> arc_length,
+               bool natural_frequencies) {
+  const SceneOverrides overrides = scene_overrides(settings, speed, arc_length);
+  std::string json;
+  {
+    py::gil_scoped_release no_gil;
+    const SceneSpec spec = load_scene_with_overrides(scene, overrides);
+    ModelCheckOptions options;
+    options.natural_frequencies = natural_frequencies;
+    const ModelCheckReport r = check_scene(spec, options);
+    std::ostringstream out;
+    write_model_check_json(out, r);
+    json = out.str();
+  }
+  py::dict out;
+  out["json"] = json;
   return out;
 }
 
@@ -192,6 +217,8 @@ py::dict bifurcation(const std::string& scene, const std::vector<std::string>& s
 void bind_studies(py::module_& m) {
   using py::arg;
   m.def("load_scene", &load_scene, arg("scene"), arg("settings"));
+  m.def("check", &check, arg("scene"), arg("settings"), arg("speed"), arg("arc_length"),
+        arg("natural_frequencies"));
   m.def("contact_geometry", &contact_geometry, arg("scene"), arg("settings"), arg("contact"));
   m.def("study", &study, arg("scene"), arg("settings"), arg("vary"), arg("from_"), arg("to"),
         arg("step"), arg("solver"), arg("hunting_band"), arg("jobs"), arg("progress"));

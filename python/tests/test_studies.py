@@ -72,3 +72,9 @@ def test_bifurcation_equals_the_command(cli):
     assert list(r.orbits) == rows[0]
     assert len(r.orbits[rows[0][0]]) == len(rows) - 1
     assert lines
+
+
+def test_check_equals_the_command(cli):
+    r = railstab.check(BOGIE, speed=30.0)
+    run = cli("check", BOGIE, "--speed", "30")
+    assert_same_report(r, run.json("_check.json"))
