@@ -43,7 +43,8 @@ from railstab import _railstab
 from railstab._railstab import Error, InputError
 
 __all__ = ["Error", "InputError", "ModelWarning", "Result", "Scene", "load_scene", "check",
-           "critical_speed", "eigen", "equilibrium", "simulate", "verify", "sensitivity",
+           "critical_speed", "eigen", "equilibrium", "simulate", "speed_ramp", "verify",
+           "sensitivity",
            "contact_geometry", "study", "bifurcation"]
 __version__ = _railstab.__version__
 
@@ -320,6 +321,29 @@ def simulate(scene, set=None, *, speed=None, t_end=None, arc_length=None, offset
     r.time = time
     r.channels = channels
     r.warnings = list(out["warnings"])
+    return r
+
+
+def speed_ramp(scene, rates, set=None, *, speed=None, ramp_to=None, hunting_threshold=None,
+               arc_length=None, offset=None, mode=None, mode_amplitude=None, integrator=None,
+               rtol=None, atol=None, progress=None):
+    """Hunting on a falling speed: ``railstab simulate --ramp-rate``.
+
+    From ``speed`` (the scene's by default) the vehicle decelerates at each of
+    ``rates`` (m/s^2; one number or several) down to ``ramp_to`` (default
+    half the start speed); each ramp reports the speed where the hunting dies
+    away (the leading wheelset's peak-to-peak lateral motion over a period
+    below ``hunting_threshold``, m). Returns the ramp JSON as a Result, plus
+      envelope   the envelope CSV's columns (per ramp: time, speed, amplitude)
+    """
+    path, settings = _scene_and_settings(scene, set)
+    if isinstance(rates, numbers.Real):
+        rates = [rates]
+    out = _railstab.speed_ramp(path, settings, speed, arc_length, _pairs("offset", offset), mode,
+                               mode_amplitude, integrator or "", rtol, atol,
+                               [float(a) for a in rates], ramp_to, hunting_threshold, progress)
+    r = _result(out)
+    r.envelope = _table(out["envelope_csv"])
     return r
 
 

@@ -1,9 +1,10 @@
-// simulate and verify: the nonlinear model in time, as the commands run it
+// simulate, speed_ramp and verify: the nonlinear model in time, as the commands run it
 // (src/cli/simulate_command.cpp, verify_command.cpp), without the GIL. The
 // run's summary (with the error estimate) is the command's JSON; the
 // channels are the command's CSV columns, written at 17 significant digits
 // (read back, the same doubles) and parsed by the Python layer.
 #include "arguments.hpp"
+#include "cli/speed_ramp_run.hpp"
 #include "bindings.hpp"
 #include "model_warnings.hpp"
 #include "progress_relay.hpp"
@@ -14,7 +15,9 @@
 #include <railstab/integrate/work_precision.hpp>
 #include <railstab/io/output_files.hpp>
 #include <railstab/io/ride_files.hpp>
+#include <railstab/nonlinear/speed_ramp.hpp>
 #include <railstab/report/simulation_report.hpp>
+#include <railstab/report/speed_ramp_report.hpp>
 #include <railstab/report/verify_report.hpp>
 #include <railstab/ride/ride_history.hpp>
 #include <railstab/stability/mode_start.hpp>
@@ -47,58 +50,89 @@ std::optional<ModeStart> mode_start(const PreparedScene& s, const std::optional<
   return mode_start_state(s.model, s.speed_m_per_s, s.equilibrium.state, *mode, *amplitude);
 }
 
-py::dict simulate(const std::string& scene, const std::vector<std::string>& settings,
-                  std::optional<double> speed, std::optional<double> arc_length,
-                  std::optional<double> t_end, const std::vector<std::string>& offsets,
-                  std::optional<std::string> mode, std::optional<double> mode_amplitude,
-                  const std::string& integrator, std::optional<double> rtol,
-                  std::optional<double> atol, bool estimate_error, bool stop_on_lift_off,
-                  py::object progress) {
-  check_in("t_end", t_end, flag_ranges::t_end_s);
-  check_in("rtol", rtol, flag_ranges::relative_tolerance);
-  check_in("atol", atol, flag_ranges::absolute_tolerance);
-  check_in("mode_amplitude", mode_amplitude, flag_ranges::amplitude_m);
-  SceneOverrides overrides = scene_overrides(settings, speed, arc_length, offsets);
-  overrides.t_end_s = t_end;
-  overrides.apply_track_irregularities = true;  // as `simulate`
+// What simulate and speed_ramp take alike: the scene's integration options
+// with the integrator and tolerances given, and the start (the scene's
+// offsets with `offset`, or a mode), as the commands set them up.
+struct RunArguments {
+  std::vector<std::string> settings, offsets;
+  std::optional<double> speed, arc_length, t_end;
+  std::optional<std::string> mode;
+  std::optional<double> mode_amplitude;
+  std::string integrator;
+  std::optional<double> rtol, atol;
+};
+
+struct TimeDomainRun {
+  SceneOverrides overrides;
   std::optional<IntegratorVariant> variant;
-  if (!integrator.empty()) {
+};
+
+// Checked before the analysis, with the GIL held.
+TimeDomainRun checked_run(const RunArguments& a) {
+  check_in("t_end", a.t_end, flag_ranges::t_end_s);
+  check_in("rtol", a.rtol, flag_ranges::relative_tolerance);
+  check_in("atol", a.atol, flag_ranges::absolute_tolerance);
+  check_in("mode_amplitude", a.mode_amplitude, flag_ranges::amplitude_m);
+  TimeDomainRun run;
+  run.overrides = scene_overrides(a.settings, a.speed, a.arc_length, a.offsets);
+  run.overrides.t_end_s = a.t_end;
+  run.overrides.apply_track_irregularities = true;  // as the time-domain commands
+  if (!a.integrator.empty()) {
     try {
-      variant = parse_integrator_variant(integrator);
+      run.variant = parse_integrator_variant(a.integrator);
     } catch (const std::invalid_argument& e) {
       throw std::invalid_argument("integrator: " + std::string(e.what()));
     }
   }
+  return run;
+}
+
+struct RunSetUp {
+  IntegrationOptions options;
+  Eigen::VectorXd x0;
+  RunStart start;
+};
+
+RunSetUp set_up_run(const PreparedScene& s, const RunArguments& a, const TimeDomainRun& run) {
+  RunSetUp u;
+  u.options = integration_options_for(s.spec.simulation);
+  if (run.variant) {
+    u.options.kind = run.variant->kind;
+    u.options.order = run.variant->order;
+  }
+  u.options.relative_tolerance = a.rtol.value_or(s.spec.simulation.relative_tolerance);
+  u.options.absolute_tolerance = a.atol.value_or(s.spec.simulation.absolute_tolerance);
+  for (const OffsetSetting& o : run.overrides.offsets) u.start.offset_settings.push_back(o.text);
+  if (const std::optional<ModeStart> m = mode_start(s, a.mode, a.mode_amplitude, !a.offsets.empty())) {
+    u.x0 = m->state;
+    u.start.on_mode = true;
+    u.start.mode_name = m->mode_name;
+    u.start.eigenvalue = m->eigenvalue;
+    u.start.leading_wheelset = m->leading_wheelset;
+    u.start.amplitude_m = m->amplitude_m;
+  } else {
+    u.x0 = perturbed_initial_state(s);
+  }
+  return u;
+}
+
+py::dict simulate(const std::string& scene, const RunArguments& a, bool estimate_error,
+                  bool stop_on_lift_off, py::object progress) {
+  const TimeDomainRun run = checked_run(a);
   ProgressRelay relay(progress);
   std::string summary, trajectory_csv, roll_csv, forces_csv, accelerations_csv;
   std::vector<std::string> warning_texts;
   std::vector<std::string> warnings;
   {
     py::gil_scoped_release no_gil;
-    const PreparedScene s = prepare_scene(scene, overrides);
+    const PreparedScene s = prepare_scene(scene, run.overrides);
     warnings = model_warnings(s);
-    IntegrationOptions opt = integration_options_for(s.spec.simulation);
-    if (variant) {
-      opt.kind = variant->kind;
-      opt.order = variant->order;
-    }
-    opt.relative_tolerance = rtol.value_or(s.spec.simulation.relative_tolerance);
-    opt.absolute_tolerance = atol.value_or(s.spec.simulation.absolute_tolerance);
+    RunSetUp u = set_up_run(s, a, run);
+    IntegrationOptions& opt = u.options;
     opt.stop_on_lift_off = stop_on_lift_off;
     opt.progress = relay.times();
-    RunStart start;
-    for (const OffsetSetting& o : overrides.offsets) start.offset_settings.push_back(o.text);
-    Eigen::VectorXd x0;
-    if (const std::optional<ModeStart> m = mode_start(s, mode, mode_amplitude, !offsets.empty())) {
-      x0 = m->state;
-      start.on_mode = true;
-      start.mode_name = m->mode_name;
-      start.eigenvalue = m->eigenvalue;
-      start.leading_wheelset = m->leading_wheelset;
-      start.amplitude_m = m->amplitude_m;
-    } else {
-      x0 = perturbed_initial_state(s);
-    }
+    const Eigen::VectorXd& x0 = u.x0;
+    const RunStart& start = u.start;
     const Trajectory traj = integrate(s.model, s.speed_m_per_s, x0, opt);
     for (const ModelWarning& w : check_run(s.model, traj)) warning_texts.push_back(w.message);
     std::optional<ErrorEstimate> error;
@@ -110,15 +144,15 @@ py::dict simulate(const std::string& scene, const std::vector<std::string>& sett
     const RideHistory ride =
         ride_history(s.model, s.speed_m_per_s, traj, s.spec.assessment.prudhomme_factor);
     summary = simulation_run_json(s.model, s.speed_m_per_s, opt, traj, error, start, &ride);
-    std::ostringstream t, r, f, a;
+    std::ostringstream t, r, f, acc;
     write_trajectory_csv(t, s.model, s.speed_m_per_s, traj, kRoundTripDigits);
     write_absolute_roll_csv(r, s.model, s.speed_m_per_s, traj, kRoundTripDigits);
     write_wheel_forces_csv(f, s.model, ride, kRoundTripDigits);
-    write_accelerations_csv(a, ride, kRoundTripDigits);
+    write_accelerations_csv(acc, ride, kRoundTripDigits);
     trajectory_csv = t.str();
     roll_csv = r.str();
     forces_csv = f.str();
-    accelerations_csv = a.str();
+    accelerations_csv = acc.str();
   }
   relay.rethrow();
   py::dict out;
@@ -128,6 +162,57 @@ py::dict simulate(const std::string& scene, const std::vector<std::string>& sett
   out["wheel_forces_csv"] = forces_csv;
   out["accelerations_csv"] = accelerations_csv;
   out["warnings"] = py::cast(warning_texts);
+  out["model_warnings"] = py::cast(warnings);
+  return out;
+}
+
+// simulate --ramp-rate: from the run's speed, decelerate at each rate and
+// report where the hunting dies away (nonlinear/speed_ramp.hpp), as
+// src/cli/speed_ramp_run.cpp.
+py::dict speed_ramp(const std::string& scene, const RunArguments& a,
+                    const std::vector<double>& rates, std::optional<double> ramp_to,
+                    double hunting_threshold, py::object progress) {
+  if (rates.empty()) throw std::invalid_argument("rates: expected one ramp rate (m/s^2) or more");
+  for (double rate : rates) check_in("rates", rate, flag_ranges::ramp_rate_m_per_s2);
+  check_in("ramp_to", ramp_to, flag_ranges::speed_m_per_s);
+  check_in("hunting_threshold", hunting_threshold, flag_ranges::hunting_threshold_m);
+  const TimeDomainRun run = checked_run(a);
+  ProgressRelay relay(progress);
+  std::string json, envelope_csv;
+  std::vector<std::string> warnings;
+  {
+    py::gil_scoped_release no_gil;
+    const PreparedScene s = prepare_scene(scene, run.overrides);
+    warnings = model_warnings(s);
+    const RunSetUp u = set_up_run(s, a, run);
+    const double V0 = s.speed_m_per_s;
+    const double end = ramp_to.value_or(kDefaultRampEndSpeedShare * V0);
+    if (!(end < V0)) {
+      std::ostringstream msg;
+      msg << "ramp_to " << end << ": expected a speed below the start speed " << V0 << " m/s";
+      throw std::invalid_argument(msg.str());
+    }
+    std::vector<SpeedRampResult> ramps;
+    for (double rate : rates) {
+      SpeedRampOptions o;
+      o.start_speed_m_per_s = V0;
+      o.ramp_rate_m_per_s2 = rate;
+      o.end_speed_m_per_s = end;
+      o.amplitude_threshold_m = hunting_threshold;
+      o.integration = u.options;
+      o.integration.t_start_s = 0.0;
+      o.integration.progress = relay.times();
+      ramps.push_back(run_speed_ramp(s.model, u.x0, o));
+    }
+    json = speed_ramp_json(s.model, ramps, u.start);
+    std::ostringstream csv;
+    write_speed_ramp_envelope_csv(csv, ramps);
+    envelope_csv = csv.str();
+  }
+  relay.rethrow();
+  py::dict out;
+  out["json"] = json;
+  out["envelope_csv"] = envelope_csv;
   out["model_warnings"] = py::cast(warnings);
   return out;
 }
@@ -190,9 +275,39 @@ py::dict verify(const std::string& scene, const std::vector<std::string>& settin
 
 void bind_time_domain(py::module_& m) {
   using py::arg;
-  m.def("simulate", &simulate, arg("scene"), arg("settings"), arg("speed"), arg("arc_length"),
-        arg("t_end"), arg("offsets"), arg("mode"), arg("mode_amplitude"), arg("integrator"),
-        arg("rtol"), arg("atol"), arg("estimate_error"), arg("stop_on_lift_off"), arg("progress"));
+  m.def(
+      "simulate",
+      [](const std::string& scene, std::vector<std::string> settings, std::optional<double> speed,
+         std::optional<double> arc_length, std::optional<double> t_end,
+         std::vector<std::string> offsets, std::optional<std::string> mode,
+         std::optional<double> mode_amplitude, std::string integrator, std::optional<double> rtol,
+         std::optional<double> atol, bool estimate_error, bool stop_on_lift_off,
+         py::object progress) {
+        const RunArguments a{std::move(settings), std::move(offsets), speed, arc_length, t_end,
+                             std::move(mode), mode_amplitude, std::move(integrator), rtol, atol};
+        return simulate(scene, a, estimate_error, stop_on_lift_off, std::move(progress));
+      },
+      arg("scene"), arg("settings"), arg("speed"), arg("arc_length"), arg("t_end"),
+      arg("offsets"), arg("mode"), arg("mode_amplitude"), arg("integrator"), arg("rtol"),
+      arg("atol"), arg("estimate_error"), arg("stop_on_lift_off"), arg("progress"));
+  m.def(
+      "speed_ramp",
+      [](const std::string& scene, std::vector<std::string> settings, std::optional<double> speed,
+         std::optional<double> arc_length, std::vector<std::string> offsets,
+         std::optional<std::string> mode, std::optional<double> mode_amplitude,
+         std::string integrator, std::optional<double> rtol, std::optional<double> atol,
+         const std::vector<double>& rates, std::optional<double> ramp_to,
+         std::optional<double> hunting_threshold, py::object progress) {
+        const RunArguments a{std::move(settings), std::move(offsets), speed, arc_length,
+                             std::nullopt, std::move(mode), mode_amplitude,
+                             std::move(integrator), rtol, atol};
+        return speed_ramp(scene, a, rates, ramp_to,
+                          hunting_threshold.value_or(kDefaultHuntingThreshold_m),
+                          std::move(progress));
+      },
+      arg("scene"), arg("settings"), arg("speed"), arg("arc_length"), arg("offsets"), arg("mode"),
+      arg("mode_amplitude"), arg("integrator"), arg("rtol"), arg("atol"), arg("rates"),
+      arg("ramp_to"), arg("hunting_threshold"), arg("progress"));
   m.def("verify", &verify, arg("scene"), arg("settings"), arg("speed"), arg("arc_length"),
         arg("amplitude"), arg("periods"), arg("settle_periods"), arg("any_mode"),
         arg("scene_offsets"), arg("offsets"), arg("mode"), arg("mode_amplitude"));

@@ -58,3 +58,16 @@ def test_simulate_with_set_and_a_mode_start_equals_the_command(cli):
               "--mode", "hunting", "--mode-amplitude", "0.001", "--no-error-estimate", "--no-plots")
     assert_same_report(r, run.json("_run.json"))
     assert r.start["mode"] and abs(r.channels["wheelset1.y_m"][0]) > 0
+
+
+def test_speed_ramp_equals_the_command(cli):
+    # The textbook wheelset (Hopf point 73.1 m/s) decelerated from 76 m/s at
+    # two rates (0.02 s CPU).
+    args = dict(speed=76.0, ramp_to=60.0, mode="hunting", mode_amplitude=0.001)
+    r = railstab.speed_ramp(WHEELSET, [1.0, 2.0], **args)
+    run = cli("simulate", WHEELSET, "--speed", "76", "--ramp-to", "60", "--mode", "hunting",
+              "--mode-amplitude", "0.001", "--ramp-rate", "1", "--ramp-rate", "2")
+    assert_same_report(r, run.json("_ramp.json"))
+    rows = run.csv_rows("_ramp_envelope.csv")
+    assert list(r.envelope) == rows[0] and len(r.envelope["time_s"]) == len(rows) - 1
+    assert all(ramp["vanished"] for ramp in r.ramps)
