@@ -37,7 +37,10 @@ def test_contact_geometry_equals_the_command(cli):
 
 def test_study_equals_the_command(cli):
     key = "elements.primary_ws1.stiffness_N_per_m[0]"
-    r = railstab.study(BOGIE, {key: (5e6, 1.5e7, 5e6)}, from_=20, to=200, step=5, jobs=2)
+    lines = []  # called from the study's two worker threads, one at a time
+    r = railstab.study(BOGIE, {key: (5e6, 1.5e7, 5e6)}, from_=20, to=200, step=5, jobs=2,
+                       progress=lines.append)
+    assert len(lines) == 3, lines
     run = cli("study", BOGIE, "--vary", f"{key}=5e6:1.5e7:5e6", "--from", "20", "--to", "200",
               "--step", "5", "--jobs", "2", "--no-plots")
     assert_same_report(r, run.json("_study.json"))
