@@ -5,16 +5,22 @@
 #   bash scripts/install_deps.sh          what the `railstab` executable needs
 #                                         (compiler, numeric libraries, gnuplot)
 #   bash scripts/install_deps.sh test     also the test suite's: GoogleTest,
-#                                         GNU parallel (the sharded-study test)
+#                                         GNU parallel (the sharded-study test),
+#                                         and the Python module's build (python3-dev,
+#                                         pybind11-dev, numpy) and tests (pytest;
+#                                         scipy and matplotlib for the examples)
 #   bash scripts/install_deps.sh ci       also CI's sanitizer stage: clang and
 #                                         its sanitizer runtime
 set -euo pipefail
 packages=(g++ cmake make libeigen3-dev libarpack2-dev libsundials-dev libsuitesparse-dev gnuplot-nox
           libtomlplusplus-dev libcli11-dev)
+# The Python module (python/; built wherever these are installed) and its
+# tests and examples. pandas is optional (study(dataframe=True)).
+python=(python3-dev pybind11-dev python3-numpy python3-pytest python3-scipy python3-matplotlib)
 case "${1:-}" in
   "") ;;
-  test) packages+=(libgtest-dev parallel) ;;
-  ci) packages+=(libgtest-dev parallel clang libclang-rt-14-dev) ;;
+  test) packages+=(libgtest-dev parallel "${python[@]}") ;;
+  ci) packages+=(libgtest-dev parallel "${python[@]}" clang libclang-rt-14-dev) ;;
   *) echo "install_deps.sh: unknown set '$1' (expected nothing, 'test' or 'ci')" >&2; exit 2 ;;
 esac
 missing=()

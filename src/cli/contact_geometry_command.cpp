@@ -28,31 +28,6 @@ struct ContactGeometryArgs {
   std::vector<SceneValueSetting> values;  // --set KEY=VALUE
 };
 
-// The contact the command is about: --contact NAME, or the scene's only
-// contact with a contact table (geometry = "profiles" or "table").
-const ContactSpec& chosen_profile_contact(const std::vector<ContactSpec>& contacts,
-                                          const ContactGeometryArgs& a) {
-  std::vector<const ContactSpec*> profile_contacts;
-  std::string names;
-  for (const ContactSpec& c : contacts)
-    if (uses_contact_table(c.geometry) && c.profile_geometry) {
-      profile_contacts.push_back(&c);
-      names += (names.empty() ? "'" : ", '") + c.name + "'";
-    }
-  if (names.empty()) names = "none";
-  if (a.contact.empty()) {
-    if (profile_contacts.size() != 1)
-      throw SceneError(a.scene + ": contacts: expected exactly one contact with geometry = "
-                       "\"profiles\" or \"table\" (or name one with --contact), got " + names);
-    return *profile_contacts.front();
-  }
-  for (const ContactSpec* c : profile_contacts)
-    if (c->name == a.contact) return *c;
-  throw SceneError(a.scene + ": --contact '" + a.contact +
-                   "': expected the name of a contact with geometry = \"profiles\" or "
-                   "\"table\" in the scene, got no such contact (profile contacts: " + names + ")");
-}
-
 void print_written(const std::vector<std::string>& written) {
   for (const std::string& f : written)
     if (f.ends_with(".csv") || f.ends_with(".json") || f.ends_with(".png"))
@@ -92,7 +67,7 @@ void run_contact_geometry(const ContactGeometryArgs& a) {
   // The scene loader's own contact reader (the same keys, checks and
   // messages as in a scene), for a whole scene or a file of contacts alone.
   const std::vector<ContactSpec> contacts = load_scene_contacts(a.scene, a.values);
-  const ContactSpec& spec = chosen_profile_contact(contacts, a);
+  const ContactSpec& spec = chosen_profile_contact(contacts, a.scene, a.contact);
   const std::string scene_name = std::filesystem::path(a.scene).stem().string();
   if (!spec.profile_geometry->has_profiles()) return run_table_contact_geometry(a, spec, scene_name);
   const ProfilePair& pair = spec.profile_geometry->pair;

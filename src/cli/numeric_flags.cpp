@@ -34,18 +34,19 @@ CLI::Validator finite_in(const FlagRange& range) {
       "NUMBER in " + range_text(range));
 }
 
-void check_speed_grid(double from, double to, double step) {
+void check_speed_grid(double from, double to, double step, const SpeedGridNames& n) {
   if (!(from < to)) {
     std::ostringstream msg;
-    msg << "--from " << from << " m/s must be below --to " << to << " m/s";
+    msg << n.from << " " << from << " m/s must be below " << n.to << " " << to << " m/s";
     throw std::invalid_argument(msg.str());
   }
   const double points = std::floor((to - from) / step) + 1.0;
   if (!(points <= kMaxSpeedGridPoints)) {
     std::ostringstream msg;
-    msg << "the speed grid from --from " << from << " to --to " << to << " m/s with --step "
-        << step << " m/s would have " << points << " points; at most "
-        << int(kMaxSpeedGridPoints) << " (raise --step or narrow the range)";
+    msg << "the speed grid from " << n.from << " " << from << " to " << n.to << " " << to
+        << " m/s with " << n.step << " " << step << " m/s would have " << points
+        << " points; at most " << int(kMaxSpeedGridPoints) << " (raise " << n.step
+        << " or narrow the range)";
     throw std::invalid_argument(msg.str());
   }
 }

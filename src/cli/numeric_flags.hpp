@@ -46,6 +46,11 @@ inline const FlagRange wheelset_amplitude_m{0.0, 0.05, true, false, "m"};
 inline const FlagRange orbit_amplitude_m{0.0, 0.05, true, false, "m"};
 inline const FlagRange periods{0.0, 1000.0, true, false, "periods"};
 inline const FlagRange settle_periods{0.0, 1000.0, false, true, "periods"};
+// simulate --ramp-rate: a deceleration above 10 m/s^2 (1 g) is no ramp a
+// vehicle runs; --hunting-threshold: the leading wheelset's peak-to-peak
+// lateral motion below which the hunting counts as gone.
+inline const FlagRange ramp_rate_m_per_s2{0.0, 10.0, true, false, "m/s^2"};
+inline const FlagRange hunting_threshold_m{1e-7, 0.02, false, false, "m"};
 // A damping-ratio limit: a positive fraction of critical damping.
 inline const FlagRange damping_ratio{0.0, 1.0, true, true, ""};
 }  // namespace flag_ranges
@@ -54,8 +59,15 @@ inline const FlagRange damping_ratio{0.0, 1.0, true, true, ""};
 // a message instead of filling memory.
 inline constexpr double kMaxSpeedGridPoints = 10000.0;
 
+// How the caller's interface names the grid: the flags, or the Python
+// module's keywords (from_, to, step).
+struct SpeedGridNames {
+  std::string from = "--from", to = "--to", step = "--step";
+};
+
 // Throws std::invalid_argument naming the flags: --from must lie below --to,
 // and (to - from) / step + 1 at most kMaxSpeedGridPoints.
-void check_speed_grid(double from_m_per_s, double to_m_per_s, double step_m_per_s);
+void check_speed_grid(double from_m_per_s, double to_m_per_s, double step_m_per_s,
+                      const SpeedGridNames& names = {});
 
 }  // namespace railstab

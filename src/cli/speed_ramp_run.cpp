@@ -13,20 +13,12 @@
 
 namespace railstab {
 
-namespace {
-
-// A deceleration above 10 m/s^2 (1 g) is no ramp a vehicle runs.
-const FlagRange kRampRate{0.0, 10.0, true, false, "m/s^2"};
-const FlagRange kHuntingThreshold{1e-7, 0.02, false, false, "m"};
-
-}  // namespace
-
 void add_ramp_flags(CLI::App* cmd, RampFlags& ramp) {
   cmd->add_option("--ramp-rate", ramp.rates_m_per_s2,
                   "decelerate from --speed at this rate (m/s^2) and report the speed where the "
                   "hunting dies away, instead of a run at one speed; repeat for a second rate "
                   "(the answer depends on the rate)")
-      ->check(finite_in(kRampRate));
+      ->check(finite_in(flag_ranges::ramp_rate_m_per_s2));
   cmd->add_option("--ramp-to", ramp.end_speed_m_per_s,
                   "speed (m/s) where a ramp ends (default half the start speed)")
       ->check(finite_in(flag_ranges::speed_m_per_s));
@@ -34,7 +26,7 @@ void add_ramp_flags(CLI::App* cmd, RampFlags& ramp) {
                   "peak-to-peak lateral motion (m) of the leading wheelset over one period below "
                   "which a ramp counts the hunting as gone")
       ->capture_default_str()
-      ->check(finite_in(kHuntingThreshold));
+      ->check(finite_in(flag_ranges::hunting_threshold_m));
 }
 
 void run_speed_ramps(const PreparedScene& scene, const Eigen::VectorXd& x0, const RunStart& start,

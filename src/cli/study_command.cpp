@@ -5,8 +5,6 @@
 #include <railstab/io/file_names.hpp>
 #include <railstab/io/gnuplot.hpp>
 #include <railstab/io/output_set.hpp>
-#include <railstab/io/regular_file.hpp>
-#include <railstab/scene_reading/load_scene.hpp>
 #include <railstab/setup/prepare_scene.hpp>
 #include <railstab/report/study_report.hpp>
 #include <railstab/stability/speed_analysis.hpp>
@@ -57,26 +55,7 @@ void run_study_command(const StudyArgs& a) {
   check_speed_grid(d.analysis.from_m_per_s, d.analysis.to_m_per_s, d.analysis.grid_step_m_per_s);
   const bool plots = a.plots && !a.shard.sharded();
   if (plots) require_gnuplot();  // before the study, not after it
-  std::string bytes;
-  try {
-    bytes = read_regular_file(a.scene);
-  } catch (const std::runtime_error& e) {
-    throw SceneError(a.scene + ": scene file: " + e.what());
-  }
-  d.scene_hash = fnv1a64_hex(bytes);
-  // Every key is checked before the first search: the scene with the fixed
-  // values and each varied key at both ends of its range.
-  // Read and built as a run would (profile contact tables included), so that a
-  // bad profile file stops the study here, not in every row.
-  SceneOverrides fixed;
-  fixed.values = d.fixed;
-  d.scene_name = load_scene_with_overrides(a.scene, fixed).name;
-  for (const VariedKey& v : d.varied)
-    for (const double value : {v.from, v.to}) {
-      std::vector<SceneValueSetting> s = d.fixed;
-      for (SceneValueSetting& linked : varied_settings(v, value)) s.push_back(std::move(linked));
-      scene_text_with_values(bytes, a.scene, s);
-    }
+  complete_study_definition(d);  // the scene's name and hash; every key checked
   std::size_t todo = 0;
   for (std::size_t i = 0; i < d.combinations(); ++i) todo += a.shard.holds(i);
   std::cerr << "study of " << d.scene_name << ": " << d.combinations() << " combinations"

@@ -31,8 +31,8 @@ std::string absolute_roll_csv_header(const Model& model) {
 }
 
 void write_trajectory_csv(std::ostream& out, const Model& model, double speed_m_per_s,
-                          const Trajectory& traj) {
-  out << trajectory_csv_header(model) << '\n' << std::setprecision(10);
+                          const Trajectory& traj, int digits) {
+  out << trajectory_csv_header(model) << '\n' << std::setprecision(digits);
   Eigen::MatrixXd q6, qd6;
   for (size_t i = 0; i < traj.times_s.size(); ++i) {
     const double t = traj.times_s[i];
@@ -52,8 +52,8 @@ void write_trajectory_csv(std::ostream& out, const Model& model, double speed_m_
 }
 
 void write_absolute_roll_csv(std::ostream& out, const Model& model, double speed_m_per_s,
-                             const Trajectory& traj) {
-  out << absolute_roll_csv_header(model) << '\n' << std::setprecision(10);
+                             const Trajectory& traj, int digits) {
+  out << absolute_roll_csv_header(model) << '\n' << std::setprecision(digits);
   Workspace<double> ws(model);
   const std::vector<BodyMotion<double>>& motions = ws.motions;
   for (size_t i = 0; i < traj.times_s.size(); ++i) {

@@ -46,8 +46,8 @@ std::string accelerations_csv_header(const RideHistory& history) {
   return header;
 }
 
-void write_wheel_forces_csv(std::ostream& out, const Model& model, const RideHistory& history) {
-  out << wheel_forces_csv_header(model, history) << '\n' << std::setprecision(10);
+void write_wheel_forces_csv(std::ostream& out, const Model& model, const RideHistory& history, int digits) {
+  out << wheel_forces_csv_header(model, history) << '\n' << std::setprecision(digits);
   for (size_t i = 0; i < history.times_s.size(); ++i) {
     const double t = history.times_s[i];
     put_csv_number(out, t, [] { return std::string("time_s"); });
@@ -72,8 +72,8 @@ void write_wheel_forces_csv(std::ostream& out, const Model& model, const RideHis
   }
 }
 
-void write_accelerations_csv(std::ostream& out, const RideHistory& history) {
-  out << accelerations_csv_header(history) << '\n' << std::setprecision(10);
+void write_accelerations_csv(std::ostream& out, const RideHistory& history, int digits) {
+  out << accelerations_csv_header(history) << '\n' << std::setprecision(digits);
   for (size_t i = 0; i < history.times_s.size(); ++i) {
     const double t = history.times_s[i];
     put_csv_number(out, t, [] { return std::string("time_s"); });

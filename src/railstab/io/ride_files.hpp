@@ -25,7 +25,10 @@ inline constexpr int kAccelerationColumnsPerPoint = 3;
 std::string wheel_forces_csv_header(const Model& model, const RideHistory& history);
 std::string accelerations_csv_header(const RideHistory& history);
 
-void write_wheel_forces_csv(std::ostream& out, const Model& model, const RideHistory& history);
-void write_accelerations_csv(std::ostream& out, const RideHistory& history);
+// `digits`: significant digits (as output_files.hpp).
+void write_wheel_forces_csv(std::ostream& out, const Model& model, const RideHistory& history,
+                            int digits = 10);
+void write_accelerations_csv(std::ostream& out, const RideHistory& history,
+                             int digits = 10);
 
 }  // namespace railstab

@@ -71,4 +71,28 @@ std::vector<ContactSpec> load_scene_contacts(const std::string& path,
   return contacts;
 }
 
+const ContactSpec& chosen_profile_contact(const std::vector<ContactSpec>& contacts,
+                                          const std::string& path, const std::string& name,
+                                          const std::string& name_flag) {
+  std::vector<const ContactSpec*> profile_contacts;
+  std::string names;
+  for (const ContactSpec& c : contacts)
+    if (uses_contact_table(c.geometry) && c.profile_geometry) {
+      profile_contacts.push_back(&c);
+      names += (names.empty() ? "'" : ", '") + c.name + "'";
+    }
+  if (names.empty()) names = "none";
+  if (name.empty()) {
+    if (profile_contacts.size() != 1)
+      throw SceneError(path + ": contacts: expected exactly one contact with geometry = "
+                       "\"profiles\" or \"table\" (or name one with " + name_flag + "), got " + names);
+    return *profile_contacts.front();
+  }
+  for (const ContactSpec* c : profile_contacts)
+    if (c->name == name) return *c;
+  throw SceneError(path + ": " + name_flag + " '" + name +
+                   "': expected the name of a contact with geometry = \"profiles\" or "
+                   "\"table\" in the scene, got no such contact (profile contacts: " + names + ")");
+}
+
 }  // namespace railstab

@@ -29,4 +29,13 @@ bool lacks_contact_tables(const SceneSpec& scene);
 std::vector<ContactSpec> load_scene_contacts(const std::string& path,
                                              const std::vector<SceneValueSetting>& settings = {});
 
+// The contact a command about one contact is about: the one named `name`,
+// or with `name` empty the only contact with a contact table (geometry =
+// "profiles" or "table"). Throws SceneError naming `path`, `name_flag`
+// (how the caller's interface names the choice: "--contact") and the
+// profile contacts there are.
+const ContactSpec& chosen_profile_contact(const std::vector<ContactSpec>& contacts,
+                                          const std::string& path, const std::string& name,
+                                          const std::string& name_flag = "--contact");
+
 }  // namespace railstab

@@ -2,6 +2,8 @@
 
 #include <railstab/stability/verdict.hpp>
 #include <railstab/setup/model_error_context.hpp>
+#include <railstab/io/regular_file.hpp>
+#include <railstab/scene_reading/load_scene.hpp>
 #include <railstab/setup/prepare_scene.hpp>
 #include <railstab/stability/speed_analysis.hpp>
 
@@ -31,6 +33,25 @@ std::string values_text(const StudyDefinition& d, const std::vector<double>& val
 }
 
 }  // namespace
+
+void complete_study_definition(StudyDefinition& d) {
+  std::string bytes;
+  try {
+    bytes = read_regular_file(d.scene_path);
+  } catch (const std::runtime_error& e) {
+    throw SceneError(d.scene_path + ": scene file: " + e.what());
+  }
+  d.scene_hash = fnv1a64_hex(bytes);
+  SceneOverrides fixed;
+  fixed.values = d.fixed;
+  d.scene_name = load_scene_with_overrides(d.scene_path, fixed).name;
+  for (const VariedKey& v : d.varied)
+    for (const double value : {v.from, v.to}) {
+      std::vector<SceneValueSetting> s = d.fixed;
+      for (SceneValueSetting& linked : varied_settings(v, value)) s.push_back(std::move(linked));
+      scene_text_with_values(bytes, d.scene_path, s);
+    }
+}
 
 StudyPoint run_study_point(const StudyDefinition& d, std::size_t index) {
   StudyPoint p;

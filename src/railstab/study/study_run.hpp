@@ -38,6 +38,16 @@ struct StudyRunOptions {
 // The points of `definition` that `options.shard` holds, in index order.
 std::vector<StudyPoint> run_study(const StudyDefinition& definition, const StudyRunOptions& options);
 
+// Fills in what a study takes from its scene file, from `definition`'s
+// scene_path, fixed values and varied keys (check_study_definition first):
+// the scene's name and the hash of its bytes, after checking every key at
+// once: the scene with the fixed values is read and built as a run would
+// (profile contact tables included), and each varied key is applied at both
+// ends of its range, so that a bad key or profile file stops the study here,
+// not in every row. Throws SceneError naming the file and key. The command
+// line and the Python module both start a study through this.
+void complete_study_definition(StudyDefinition& definition);
+
 // One combination (what each thread runs).
 StudyPoint run_study_point(const StudyDefinition& definition, std::size_t index);
 

@@ -1,0 +1,26 @@
+#pragma once
+// An analysis's files, written by the command line's own writers (report/)
+// into a private temporary folder and read back as text: the Python module
+// returns the same JSON fields as the files because the same code renders
+// them, and a change to a report reaches both at once. The folder is removed
+// whatever happens (the writers' OutputSet is all-or-nothing, so a failing
+// writer leaves nothing half-written to read).
+#include <railstab/io/output_set.hpp>
+
+#include <functional>
+#include <map>
+#include <string>
+
+namespace railstab::python {
+
+struct WrittenFiles {
+  std::map<std::string, std::string> text;  // file name -> contents
+  // The one file whose name ends with `suffix` (e.g. "_critical_speed.json");
+  // throws std::logic_error naming the files there are when there is not
+  // exactly one (a writer renamed its output: a bug of this module).
+  const std::string& ending_with(const std::string& suffix) const;
+};
+
+WrittenFiles write_and_read(const std::function<void(OutputSet&)>& write);
+
+}  // namespace railstab::python
