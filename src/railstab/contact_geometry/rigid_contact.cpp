@@ -23,7 +23,7 @@ SideGaps side_gaps(const WheelsetProfilePairs& pairs, int side, double y, double
     std::ostringstream msg;
     msg << "no contact point between the " << (side > 0 ? "left" : "right") << " wheel ("
         << pair.wheel.source << ") and its rail (" << pair.rail.source
-        << ") at a wheelset lateral shift of " << y * 1e3 << " mm and roll " << roll
+        << ") at a wheelset centre shift of " << y * 1e3 << " mm and roll " << roll
         << " rad; expected the wheel tread above the rail head (check the gauge, the "
            "flange-back distance and the profile frames)";
     throw ContactGeometryError(msg.str());
