@@ -203,3 +203,37 @@ TEST(ProfileContactScene, ShippedCaseReadsAndBadKeysAreNamed) {
   EXPECT_NE(e2.find("contacts.a.track_gauge_m"), std::string::npos) << e2;
   EXPECT_NE(e2.find("a number (m), got a string 'wide'"), std::string::npos) << e2;
 }
+
+// The EN 15302 keys of a profile contact (docs/en15302.md): the right
+// wheel's radius and the gauge point's y are range-checked and named; the
+// gauge point is searched or given, not both; the right rail's gauge point
+// needs the left's; the keys are refused with another geometry.
+TEST(ProfileContactScene, AsymmetricAndGaugePointKeysAreCheckedAndNamed) {
+  TempDir dir;
+  const std::string profiles = std::string(RAILSTAB_CASES_DIR) + "/profiles/";
+  const std::string head = "[contacts.a]\ngeometry = \"profiles\"\nwheel_profile = \"" + profiles +
+                           "MBench_S1002_v3.prw\"\nrail_profile = \"" + profiles +
+                           "MBench_UIC60_v3.prr\"\n";
+  const std::string radius =
+      dir.write("r.toml", head + "right_nominal_rolling_radius_m = 2.0\n");
+  const std::string e = error_of([&] { load_scene_contacts(radius); });
+  EXPECT_NE(e.find("contacts.a.right_nominal_rolling_radius_m"), std::string::npos) << e;
+  const std::string both = dir.write(
+      "b.toml", head + "rail_gauge_point_y_m = -0.035\ngauge_measuring_height_m = 0.014\n");
+  const std::string e2 = error_of([&] { load_scene_contacts(both); });
+  EXPECT_NE(e2.find("contacts.a.gauge_measuring_height_m"), std::string::npos) << e2;
+  const std::string right_only = dir.write("o.toml", head + "right_rail_gauge_point_y_m = -0.035\n");
+  const std::string e3 = error_of([&] { load_scene_contacts(right_only); });
+  EXPECT_NE(e3.find("contacts.a.rail_gauge_point_y_m"), std::string::npos) << e3;
+  const std::string cone = dir.write(
+      "c.toml", "[contacts.a]\ngeometry = \"knife_edge_cone\"\nright_nominal_rolling_radius_m = 0.45\n");
+  const std::string e4 = error_of([&] { load_scene_contacts(cone); });
+  EXPECT_NE(e4.find("contacts.a.right_nominal_rolling_radius_m"), std::string::npos) << e4;
+  // Read: an asymmetric wheelset with its own pair and table.
+  const std::string good = dir.write("g.toml", head + "right_nominal_rolling_radius_m = 0.459\n");
+  const std::vector<ContactSpec> contacts = load_scene_contacts(good);
+  ASSERT_EQ(contacts.size(), 1u);
+  ASSERT_TRUE(contacts[0].profile_geometry->asymmetric());
+  EXPECT_DOUBLE_EQ(contacts[0].profile_geometry->pair_for(-1).parameters.nominal_rolling_radius_m,
+                   0.459);
+}

@@ -71,6 +71,8 @@
 //   (a/b ~ 15) and a near-conformal tread's wide one lie outside, so the
 //   coefficients are taken at a/b softly clamped into [0.112, 8.9] (same
 //   area ab); the creep law still sees the Hertz a and b.
+#include <algorithm>
+
 #include <railstab/contact/creep/smooth_functions.hpp>
 #include <railstab/contact/hertz.hpp>
 #include <railstab/contact/kalker.hpp>
@@ -231,16 +233,23 @@ ContactPointGeometry<T> profile_slot_geometry(const ModelContactTpl<S>& contact,
   // The wheelset relative to this wheel's rail: a rail displaced by the
   // track irregularities is the wheelset displaced the other way.
   const RailDisplacement& rail = ws.track->rail(side);
-  const WheelPoseOf<T> pose = wheel_pose_in_rail_frame<T>(pg.pair, side, T(ws.q(1) - rail.lateral_m),
+  // Each wheel on its own pair and table (an asymmetric wheelset: the right
+  // wheel's profile, radius and rail; ProfileContactGeometry::pair_for).
+  const ProfilePair& pair = pg.pair_for(side);
+  const WheelPoseOf<T> pose = wheel_pose_in_rail_frame<T>(pair, side, T(ws.q(1) - rail.lateral_m),
                                                           T(ws.q(2) - rail.vertical_m), ws.q(3));
   ContactPointGeometry<T> g;
   g.point_I.setZero();
   g.nu_I = Vec3<T>(T(0), T(0), T(1));
   g.rolling_radius_m = g.A_per_m = g.B_per_m = g.contact_angle_rad = T(0);
   const ContactTable& table = pg.table_for(side);
+  g.weight = T(0);
+  if (slot >= table.slots()) {  // the other wheel's table has more slots: no contact here
+    g.penetration_m = T(-1);
+    return g;
+  }
   const T gap = table.vertical_gap<T>(slot, pose);
   g.penetration_m = -gap;  // (the vertical overlap: its sign is all that is used out of contact)
-  g.weight = T(0);
   if (value_of(gap) >= 0.0) return g;
   const TableContact<T> c = table.evaluate<T>(slot, pose);
   g.weight = c.interior_weight;
@@ -254,7 +263,7 @@ ContactPointGeometry<T> profile_slot_geometry(const ModelContactTpl<S>& contact,
   g.nu_I = Vec3<T>(T(0), T(-s) * sin(alpha), cos(alpha));
   g.penetration_m = -(gap + shared) * cos(c.contact_angle_rad);
   g.rolling_radius_m = c.rolling_radius_m;
-  const T eta = s * (pg.pair.wheel_offset_y_m + c.wheel_u_m);
+  const T eta = s * (pair.wheel_offset_y_m + c.wheel_u_m);
   g.point_I = Vec3<T>(T(0), eta, -c.rolling_radius_m) - T(0.5) * g.penetration_m * g.nu_I;
   g.A_per_m = c.A_per_m;
   g.B_per_m = c.B_per_m;
@@ -390,20 +399,27 @@ WheelContact<T> contact_point_forces(const ModelContactTpl<S>& contact, const Bo
 // Contact points a wheel of this contact has: 1 for the flangeless
 // geometries, the table's slots for profiles.
 template <class S> int contact_points_per_wheel(const ModelContactTpl<S>& contact) {
-  return uses_contact_table(contact.spec.geometry)
-             ? contact.spec.profile_geometry->table.slots()
-             : 1;
+  if (!uses_contact_table(contact.spec.geometry)) return 1;
+  const ProfileContactGeometry& pg = *contact.spec.profile_geometry;
+  return std::max(pg.table_for(+1).slots(), pg.table_for(-1).slots());
 }
 
 // Lowest vertical gap of the left wheel of a centred, unrolled wheelset whose
 // centre is at height z_m (profiles: over the table's slots; > 0: the wheel
-// floats). The flangeless geometries touch at z = r0: r0 - z_m.
+// floats). The flangeless geometries touch at z = r0: r0 - z_m. An
+// asymmetric wheelset: the larger of its two wheels' gaps (the smaller
+// wheel floats by the radius difference; lowering by it puts both wheels on
+// their rails, so an equilibrium solve starts with both in contact).
 inline double centred_wheel_gap_m(const ModelContact& contact, double z_m) {
   if (!uses_contact_table(contact.spec.geometry))
     return z_m - contact.spec.nominal_rolling_radius_m;
   const ProfileContactGeometry& pg = *contact.spec.profile_geometry;
-  const WheelPoseOf<double> pose = wheel_pose_in_rail_frame<double>(pg.pair, +1, 0.0, z_m, 0.0);
-  return pg.table.lowest_vertical_gap(pose);
+  auto gap = [&](int side) {
+    const WheelPoseOf<double> pose =
+        wheel_pose_in_rail_frame<double>(pg.pair_for(side), side, 0.0, z_m, 0.0);
+    return pg.table_for(side).lowest_vertical_gap(pose);
+  };
+  return pg.asymmetric() ? std::max(gap(+1), gap(-1)) : gap(+1);
 }
 
 // Contact point `slot` of the wheel on `side`: geometry, then forces. Out of

@@ -11,6 +11,7 @@
 #include <optional>
 #include <ostream>
 #include <sstream>
+#include <stdexcept>
 #include <vector>
 
 namespace railstab {
@@ -138,11 +139,20 @@ class Reader {
 
 void write_contact_table_file(std::ostream& out, const ProfileContactGeometry& g,
                               const std::string& source) {
+  if (g.asymmetric())
+    throw std::invalid_argument(
+        "contact table file: expected a symmetric wheelset (the file holds one wheel's table, "
+        "mirrored for the other), got an asymmetric one");
   const ContactTable& t = g.table;
   std::optional<double> flange_shift = g.flange_contact_shift_m;
   if (!flange_shift && g.has_profiles()) {
-    const FlangeContact f = find_flange_contact(g.pair);
-    if (f.found) flange_shift = f.lateral_shift_m;
+    // A pair whose rigid contact ends before any flange contact (a wheel
+    // narrower than the search) states none.
+    try {
+      const FlangeContact f = find_flange_contact(g.pair);
+      if (f.found) flange_shift = f.lateral_shift_m;
+    } catch (const ContactGeometryError&) {
+    }
   }
   out << "key,value\n"
          "# railstab contact table: the elastic contact model's table of one wheel on its rail\n"

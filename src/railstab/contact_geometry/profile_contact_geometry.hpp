@@ -5,6 +5,7 @@
 // the twins of the preload and curve set-up reuse it).
 #include <railstab/contact_geometry/contact_tables.hpp>
 #include <railstab/contact_geometry/profile_source.hpp>
+#include <railstab/contact_geometry/rigid_contact.hpp>
 #include <railstab/profiles/profile_pair.hpp>
 
 #include <memory>
@@ -14,11 +15,21 @@
 namespace railstab {
 
 struct ProfileContactGeometry {
-  ProfilePair pair;
+  ProfilePair pair;  // the left wheel's (and the right's unless right_pair)
   ContactTable table;
-  // The right wheel's table where it differs from the left's (a quasi-linear
-  // contact about a wheelset centre y_c != 0: quasi_linear_contact.hpp);
-  // empty: the right wheel is the left's mirror image on the same table.
+  // An asymmetric wheelset (right_wheel_profile, right_rail_profile or
+  // right_nominal_rolling_radius_m in the scene): the right wheel's own
+  // placed pair, and right_table built from it. Empty: the right wheel is
+  // the left's mirror image.
+  std::optional<ProfilePair> right_pair;
+  const ProfilePair& pair_for(int side) const {
+    return side < 0 && right_pair ? *right_pair : pair;
+  }
+  bool asymmetric() const { return right_pair.has_value(); }
+  WheelsetProfilePairs pairs() const { return WheelsetProfilePairs{pair, pair_for(-1)}; }
+  // The right wheel's table where it differs from the left's (an
+  // asymmetric wheelset: from right_pair; a quasi-linear contact about a
+  // wheelset centre y_c != 0: quasi_linear_contact.hpp); empty: the right wheel is the left's mirror image on the same table.
   std::optional<ContactTable> right_table;
   const ContactTable& table_for(int side) const {
     return side < 0 && right_table ? *right_table : table;

@@ -50,6 +50,11 @@ QuasiLinearContact::QuasiLinearContact(std::shared_ptr<const ProfileContactGeome
   if (!geometry_) throw std::invalid_argument("QuasiLinearContact: no profile contact geometry");
   if (!(sample_step_m > 0.0))
     throw std::invalid_argument("QuasiLinearContact: expected a positive sample step");
+  if (geometry_->asymmetric())
+    throw std::invalid_argument(
+        "quasi-linear contact: expected a symmetric wheelset (its rigid-contact functions are "
+        "taken as odd in y), got an asymmetric one (right_wheel_profile, right_rail_profile, "
+        "right_nominal_rolling_radius_m or right_rail_gauge_point_y_m in the contact)");
   const ProfilePair& pair = geometry_->pair;
   const ContactTable& table = geometry_->table;
   const double reach = table.options().lateral_half_range_m - 1e-3;

@@ -17,7 +17,8 @@ struct SideGap {
 };
 
 SideGap side_gap(const ProfileContactGeometry& g, int side, double y, double roll) {
-  const WheelPoseOf<double> pose = wheel_pose_in_rail_frame<double>(g.pair, side, y, 0.0, roll);
+  const WheelPoseOf<double> pose =
+      wheel_pose_in_rail_frame<double>(g.pair_for(side), side, y, 0.0, roll);
   const ContactTable& t = g.table_for(side);
   SideGap s{t.vertical_gap<double>(0, pose), 0};
   for (int k = 1; k < t.slots(); ++k) {
@@ -40,7 +41,8 @@ double mismatch(const ProfileContactGeometry& g, double y, double roll) {
 
 TableWheelContact wheel_contact(const ProfileContactGeometry& g, int side, double y, double roll) {
   const SideGap s = side_gap(g, side, y, roll);
-  const WheelPoseOf<double> pose = wheel_pose_in_rail_frame<double>(g.pair, side, y, 0.0, roll);
+  const WheelPoseOf<double> pose =
+      wheel_pose_in_rail_frame<double>(g.pair_for(side), side, y, 0.0, roll);
   const TableContact<double> c = g.table_for(side).evaluate<double>(s.slot, pose);
   TableWheelContact w;
   w.slot = s.slot;
@@ -53,9 +55,15 @@ TableWheelContact wheel_contact(const ProfileContactGeometry& g, int side, doubl
 
 }  // namespace
 
-TableRigidRow table_rigid_contact(const ProfileContactGeometry& g, double y, double roll_guess) {
+TableRigidRow table_rigid_contact(const ProfileContactGeometry& g, double y, double roll_guess,
+                                  LateralShiftReference reference) {
+  // The centre's shift y_c for y in `reference` (rigid_contact.hpp).
+  const double r0 = g.pairs().mean_nominal_rolling_radius_m();
+  auto centre = [&](double roll) {
+    return reference == LateralShiftReference::wheelset_centre ? y : y - r0 * std::sin(roll);
+  };
   const BracketedRoot root =
-      bracketed_root([&](double roll) { return mismatch(g, y, roll); }, roll_guess);
+      bracketed_root([&](double roll) { return mismatch(g, centre(roll), roll); }, roll_guess);
   if (!root.bracketed) {
     std::ostringstream msg;
     msg << "rigid contact on the contact table: no roll angle within +-" << root.half_width
@@ -65,9 +73,10 @@ TableRigidRow table_rigid_contact(const ProfileContactGeometry& g, double y, dou
   const double roll = root.x;
   TableRigidRow r;
   r.lateral_m = y;
+  r.centre_lateral_m = centre(roll);
   r.roll_rad = roll;
-  r.left = wheel_contact(g, +1, y, roll);
-  r.right = wheel_contact(g, -1, y, roll);
+  r.left = wheel_contact(g, +1, r.centre_lateral_m, roll);
+  r.right = wheel_contact(g, -1, r.centre_lateral_m, roll);
   return r;
 }
 

@@ -23,15 +23,17 @@ struct TableWheelContact {
 };
 
 struct TableRigidRow {
-  double lateral_m = 0, roll_rad = 0;
+  double lateral_m = 0, roll_rad = 0;  // the shift in the reference asked for
+  double centre_lateral_m = 0;         // the wheelset centre's (rigid_contact.hpp)
   TableWheelContact left, right;
   double delta_r_m() const { return left.rolling_radius_m - right.rolling_radius_m; }
 };
 
 // Throws ContactGeometryError (rigid_contact.hpp) where no roll within the
 // table's range makes both wheels touch.
-TableRigidRow table_rigid_contact(const ProfileContactGeometry& geometry, double lateral_m,
-                                  double roll_guess_rad = 0.0);
+TableRigidRow table_rigid_contact(
+    const ProfileContactGeometry& geometry, double lateral_m, double roll_guess_rad = 0.0,
+    LateralShiftReference reference = LateralShiftReference::wheelset_centre);
 
 // Rows for y = y_min, y_min + step, ..., y_max (roll continued from the centre out).
 std::vector<TableRigidRow> table_characteristic_functions(const ProfileContactGeometry& geometry,

@@ -70,7 +70,19 @@ ProfilePair make_profile_pair(Profile wheel, Profile rail, const ProfilePairPara
   const size_t top = size_t(std::max_element(rail.z_m.begin(), rail.z_m.end()) - rail.z_m.begin());
   pair.rail_top_y_m = rail.y_m[top];
   pair.rail_top_z_m = rail.z_m[top];
-  pair.gauge_point_y_m = gauge_point(rail, top, pair.rail_top_z_m - p.gauge_measuring_height_m);
+  if (p.rail_gauge_point_y_m) {
+    const double y = *p.rail_gauge_point_y_m;
+    if (!(y >= rail.y_m.front() && y <= rail.y_m.back())) {
+      std::ostringstream msg;
+      msg << "rail_gauge_point_y_m: expected a y within the rail profile " << rail.source << " ("
+          << rail.y_m.front() << " .. " << rail.y_m.back() << " m, after the inclination), got "
+          << y;
+      throw ProfileError(msg.str());
+    }
+    pair.gauge_point_y_m = y;
+  } else {
+    pair.gauge_point_y_m = gauge_point(rail, top, pair.rail_top_z_m - p.gauge_measuring_height_m);
+  }
   pair.rail_offset_y_m = 0.5 * p.track_gauge_m - pair.gauge_point_y_m;
   pair.wheel_offset_y_m = 0.5 * p.flange_back_distance_m + p.tape_circle_from_flange_back_m;
   pair.wheel_z = CubicSpline(wheel.y_m, wheel.z_m);

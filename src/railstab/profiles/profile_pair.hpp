@@ -28,6 +28,8 @@
 #include <railstab/profiles/cubic_spline.hpp>
 #include <railstab/profiles/profile.hpp>
 
+#include <optional>
+
 namespace railstab {
 
 struct ProfilePairParameters {
@@ -37,6 +39,9 @@ struct ProfilePairParameters {
   double nominal_rolling_radius_m = 0.460;
   double rail_inclination_rad = 0.0;         // 0: rail given canted (benchmark UIC60 file)
   double tape_circle_from_flange_back_m = 0.070;  // EN 13715 (S1002 and relatives)
+  // The gauge point's y in the rail profile frame (after the inclination);
+  // empty: searched at gauge_measuring_height_m below the top of rail.
+  std::optional<double> rail_gauge_point_y_m;
 };
 
 struct ProfilePair {

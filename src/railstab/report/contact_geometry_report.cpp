@@ -5,6 +5,7 @@
 #include <railstab/io/gnuplot.hpp>
 #include <railstab/io/output_set.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -40,23 +41,89 @@ void write_contact(Csv& c, const ContactPoint* p) {
 }
 
 // The "equivalent_conicity" array of the JSON: one object per amplitude.
+// wavelength_m is null where the conicity is 0 (no restoring: infinite).
 void write_conicity_points(JsonWriter& j, const std::vector<ConicityPoint>& points) {
   j.key("equivalent_conicity").begin_array();
-  for (const ConicityPoint& c : points)
+  for (const ConicityPoint& c : points) {
+    j.begin_object().field("amplitude_m", c.amplitude_m);
+    if (std::isfinite(c.wavelength_m)) j.field("wavelength_m", c.wavelength_m);
+    else j.key("wavelength_m").null();
+    j.field("equivalent_conicity", c.equivalent_conicity)
+        .field("lower_turning_point_m", c.lower_turning_point_m)
+        .field("upper_turning_point_m", c.upper_turning_point_m)
+        .end_object();
+  }
+  j.end_array();
+}
+
+// The conicity CSV: one row per amplitude of the grid; a point that could
+// not be computed has empty fields (its reason is in the JSON), a conicity
+// of 0 an empty wavelength.
+template <class Summary>
+void write_conicity_csv(std::ostream& out, const Summary& s) {
+  out << std::setprecision(10)
+      << "amplitude_m,wavelength_m,equivalent_conicity,lower_turning_point_m,"
+         "upper_turning_point_m\n";
+  struct Row {
+    double amplitude;
+    const ConicityPoint* point;
+  };
+  std::vector<Row> rows;
+  for (const ConicityPoint& p : s.conicity) rows.push_back({p.amplitude_m, &p});
+  for (const NotComputed& n : s.not_computed)
+    if (n.what == "equivalent conicity" && n.at_m > 0.0) {
+      bool listed = false;
+      for (const Row& r : rows) listed |= std::abs(r.amplitude - n.at_m) < 1e-12;
+      if (!listed) rows.push_back({n.at_m, nullptr});
+    }
+  std::sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) { return a.amplitude < b.amplitude; });
+  Csv c{out};
+  for (const Row& r : rows) {
+    c << r.amplitude;
+    if (!r.point) {
+      c.empty().empty().empty().empty();
+    } else {
+      if (std::isfinite(r.point->wavelength_m)) c << r.point->wavelength_m;
+      else c.empty();
+      c << r.point->equivalent_conicity << r.point->lower_turning_point_m
+        << r.point->upper_turning_point_m;
+    }
+    c.end();
+  }
+}
+
+// The JSON's equilibrium and the points not computed.
+template <class Summary>
+void write_equilibrium_and_failures(JsonWriter& j, const Summary& s) {
+  if (std::isfinite(s.equilibrium.low_m)) {
+    j.field("equilibrium_lateral_m", s.equilibrium.centre_m())
+        .field("equilibrium_zero_delta_r_from_m", s.equilibrium.low_m)
+        .field("equilibrium_zero_delta_r_to_m", s.equilibrium.high_m);
+  }
+  j.key("not_computed").begin_array();
+  for (const NotComputed& n : s.not_computed)
     j.begin_object()
-        .field("amplitude_m", c.amplitude_m)
-        .field("wavelength_m", c.wavelength_m)
-        .field("equivalent_conicity", c.equivalent_conicity)
+        .field("what", n.what)
+        .field("at_m", n.at_m)
+        .field("reason", n.reason)
         .end_object();
   j.end_array();
 }
 
+const char* kLateralShiftDefinition =
+    "EN 15302: lateral displacement of the wheelset relative to the track, y = y_centre + "
+    "r0_mean sin(roll) (the midpoint of the tape circles' lowest points); the CSV's "
+    "wheelset_centre_y_m is the wheelset centre's";
+
 }  // namespace
 
-void write_contact_geometry_report(const ProfilePair& pair, const ContactGeometrySummary& s,
+void write_contact_geometry_report(const WheelsetProfilePairs& pairs,
+                                   const ContactGeometrySummary& s,
                                    const std::string& scene_name, const std::string& scene_file,
                                    const std::string& contact_name, OutputSet& outputs,
                                    const std::string& stem, bool plots) {
+  const ProfilePair& pair = pairs.left;
+  const bool asymmetric = &pairs.left != &pairs.right;
   struct {
     std::string characteristic_csv, conicity_csv, json;
   } files;
@@ -82,10 +149,17 @@ void write_contact_geometry_report(const ProfilePair& pair, const ContactGeometr
            "second_contact_angle_left_rad,second_rolling_radius_left_m,"
            "second_contact_y_rail_left_m,second_contact_u_wheel_left_m,second_gap_left_m,"
            "second_contact_angle_right_rad,second_rolling_radius_right_m,"
-           "second_contact_y_rail_right_m,second_contact_u_wheel_right_m,second_gap_right_m\n";
+           "second_contact_y_rail_right_m,second_contact_u_wheel_right_m,second_gap_right_m,"
+           "wheelset_centre_y_m\n";
     Csv c{out};
     for (const CharacteristicRow& row : s.rows) {
       const RigidContactSolution& r = row.solution;
+      if (!row.computed()) {  // a shift without rigid contact: y alone (reason in the JSON)
+        c << r.lateral_m;
+        for (int k = 0; k < 24; ++k) c.empty();
+        c.end();
+        continue;
+      }
       const ContactPoint &l = r.left.front(), &rr = r.right.front();
       c << r.lateral_m << row.delta_r_m() << r.roll_rad << r.vertical_m << l.contact_angle_rad
         << rr.contact_angle_rad << l.rolling_radius_m << rr.rolling_radius_m << l.rail_y_m
@@ -93,17 +167,11 @@ void write_contact_geometry_report(const ProfilePair& pair, const ContactGeometr
         << double(r.contacts_right());
       write_contact(c, r.left.size() > 1 ? &r.left[1] : nullptr);
       write_contact(c, r.right.size() > 1 ? &r.right[1] : nullptr);
+      c << r.centre_lateral_m;
       c.end();
     }
   });
-  outputs.write(files.conicity_csv, [&](std::ostream& out) {
-    out << std::setprecision(10) << "amplitude_m,wavelength_m,equivalent_conicity\n";
-    Csv c{out};
-    for (const ConicityPoint& p : s.conicity) {
-      c << p.amplitude_m << p.wavelength_m << p.equivalent_conicity;
-      c.end();
-    }
-  });
+  outputs.write(files.conicity_csv, [&](std::ostream& out) { write_conicity_csv(out, s); });
   outputs.write(files.json, [&](std::ostream& out) {
     JsonWriter j(out);
     const ProfilePairParameters& p = pair.parameters;
@@ -112,20 +180,36 @@ void write_contact_geometry_report(const ProfilePair& pair, const ContactGeometr
         .field("contact", contact_name)
         .field("wheel_profile", pair.wheel.source)
         .field("rail_profile", pair.rail.source)
+        .field("asymmetric_wheelset", asymmetric);
+    if (asymmetric)
+      j.field("right_wheel_profile", pairs.right.wheel.source)
+          .field("right_rail_profile", pairs.right.rail.source)
+          .field("right_nominal_rolling_radius_m",
+                 pairs.right.parameters.nominal_rolling_radius_m);
+    j
         .field("track_gauge_m", p.track_gauge_m)
         .field("gauge_measuring_height_m", p.gauge_measuring_height_m)
         .field("flange_back_distance_m", p.flange_back_distance_m)
         .field("nominal_rolling_radius_m", p.nominal_rolling_radius_m)
         .field("rail_inclination_rad", p.rail_inclination_rad)
         .field("tape_circle_from_flange_back_m", p.tape_circle_from_flange_back_m)
+        .field("rail_gauge_point_y_m", pair.gauge_point_y_m)
         .field("half_contact_distance_m", s.half_contact_distance_m)
+        .field("klingel_rolling_radius_m", s.nominal_rolling_radius_m)
+        .field("lateral_shift", kLateralShiftDefinition)
         .field("method", "EN 15302: integration of the Klingel motion y'' = -delta_r(y)/(2 e0 r0) "
-                         "over the rigid-contact delta_r function (yaw neglected); "
-                         "tan(gamma_e) = r0 e0 (2 pi / lambda)^2")
-        .field("reference_amplitude_m", kConicityReferenceAmplitude_m)
-        .field("equivalent_conicity_at_reference_amplitude", s.equivalent_conicity_at_3mm)
-        .field("flange_contact_found", s.flange.found);
+                         "over the rigid-contact delta_r function (yaw neglected) from a turning "
+                         "point; amplitude = half the peak-to-peak motion about the equilibrium; "
+                         "tan(gamma_e) = r0 e0 (2 pi / lambda)^2; conicity 0 where the motion "
+                         "stays on a stretch of zero delta_r")
+        .field("reference_amplitude_m", kConicityReferenceAmplitude_m);
+    if (std::isfinite(s.equivalent_conicity_at_3mm))
+      j.field("equivalent_conicity_at_reference_amplitude", s.equivalent_conicity_at_3mm);
+    else
+      j.key("equivalent_conicity_at_reference_amplitude").null();
+    j.field("flange_contact_found", s.flange.found);
     if (s.flange.found) j.field("flange_contact_shift_m", s.flange.lateral_shift_m);
+    write_equilibrium_and_failures(j, s);
     write_conicity_points(j, s.conicity);
     j.end_object();
   });
@@ -158,6 +242,7 @@ void write_contact_geometry_report(const ProfilePair& pair, const ContactGeometr
     }
     out << "\n\n# contact-point lines, every 0.5 mm of shift\n";
     for (const CharacteristicRow& row : s.rows) {
+      if (!row.computed()) continue;
       const double y = row.solution.lateral_m;
       if (std::abs(std::remainder(y, 5e-4)) > 1e-9) continue;
       for (const ContactPoint& cp : row.solution.left) {
@@ -217,24 +302,17 @@ void write_table_contact_geometry_report(const ProfileContactGeometry& g,
     out << "y_m,delta_r_m,roll_rad,contact_angle_left_rad,contact_angle_right_rad,"
            "rolling_radius_left_m,rolling_radius_right_m,contact_y_rail_left_m,"
            "contact_y_rail_right_m,contact_u_wheel_left_m,contact_u_wheel_right_m,slot_left,"
-           "slot_right\n";
+           "slot_right,wheelset_centre_y_m\n";
     Csv c{out};
     for (const TableRigidRow& r : s.rows) {
       c << r.lateral_m << r.delta_r_m() << r.roll_rad << r.left.contact_angle_rad
         << r.right.contact_angle_rad << r.left.rolling_radius_m << r.right.rolling_radius_m
         << r.left.rail_y_m << r.right.rail_y_m << r.left.wheel_u_m << r.right.wheel_u_m
-        << double(r.left.slot) << double(r.right.slot);
+        << double(r.left.slot) << double(r.right.slot) << r.centre_lateral_m;
       c.end();
     }
   });
-  outputs.write(stem + "_conicity.csv", [&](std::ostream& out) {
-    out << std::setprecision(10) << "amplitude_m,wavelength_m,equivalent_conicity\n";
-    Csv c{out};
-    for (const ConicityPoint& p : s.conicity) {
-      c << p.amplitude_m << p.wavelength_m << p.equivalent_conicity;
-      c.end();
-    }
-  });
+  outputs.write(stem + "_conicity.csv", [&](std::ostream& out) { write_conicity_csv(out, s); });
   outputs.write(stem + ".json", [&](std::ostream& out) {
     JsonWriter j(out);
     j.begin_object()
@@ -244,14 +322,18 @@ void write_table_contact_geometry_report(const ProfileContactGeometry& g,
         .field("nominal_rolling_radius_m", g.pair.parameters.nominal_rolling_radius_m)
         .field("half_contact_distance_m", s.half_contact_distance_m)
         .field("lateral_reach_m", s.lateral_reach_m)
+        .field("lateral_shift", kLateralShiftDefinition)
         .field("method", "EN 15302: integration of the Klingel motion y'' = -delta_r(y)/(2 e0 r0) "
                          "over the rigid-contact delta_r function evaluated on the contact table "
-                         "(yaw neglected); tan(gamma_e) = r0 e0 (2 pi / lambda)^2")
+                         "(yaw neglected) from a turning point; amplitude = half the "
+                         "peak-to-peak motion about the equilibrium; "
+                         "tan(gamma_e) = r0 e0 (2 pi / lambda)^2")
         .field("reference_amplitude_m", kConicityReferenceAmplitude_m);
     if (std::isfinite(s.equivalent_conicity_at_3mm))
       j.field("equivalent_conicity_at_reference_amplitude", s.equivalent_conicity_at_3mm);
     j.field("flange_contact_found", g.flange_contact_shift_m.has_value());
     if (g.flange_contact_shift_m) j.field("flange_contact_shift_m", *g.flange_contact_shift_m);
+    write_equilibrium_and_failures(j, s);
     write_conicity_points(j, s.conicity);
     j.end_object();
   });

@@ -19,7 +19,8 @@ class OutputSet;
 // `scene_file` (the path as given) and `contact` (the contact's name).
 // With plots = false gnuplot is not run and an earlier run's plots of the
 // same names are removed at commit.
-void write_contact_geometry_report(const ProfilePair& pair, const ContactGeometrySummary& summary,
+void write_contact_geometry_report(const WheelsetProfilePairs& pairs,
+                                   const ContactGeometrySummary& summary,
                                    const std::string& scene_name, const std::string& scene_file,
                                    const std::string& contact_name, OutputSet& outputs,
                                    const std::string& stem, bool plots = true);

@@ -23,12 +23,18 @@ double number_required_when(const TableReader& contact, bool required, std::stri
   return contact.number_or(key, unit, fallback);
 }
 
-ContactSpec read_contact(const TableReader& contact, std::string name) {
+ContactSpec read_contact(const TableReader& contact, std::string name, ContactUse use) {
   ContactSpec spec;
   spec.name = std::move(name);
   spec.geometry = contact.choice("geometry", kContactGeometries);
-  spec.normal = contact.choice("normal", kNormalForces);
-  spec.tangential = contact.choice("tangential", kTangentialForces);
+  if (use == ContactUse::geometry_only) {
+    spec.normal = contact.choice_or("normal", kNormalForces, NormalForceKind::hertz);
+    spec.tangential =
+        contact.choice_or("tangential", kTangentialForces, TangentialForceKind::kalker_hertz);
+  } else {
+    spec.normal = contact.choice("normal", kNormalForces);
+    spec.tangential = contact.choice("tangential", kTangentialForces);
+  }
 
   const bool linear_conicity = spec.geometry == ContactGeometryKind::linear_conicity;
   const bool prescribed = spec.normal == NormalForceKind::prescribed;
@@ -83,7 +89,7 @@ ContactSpec read_contact(const TableReader& contact, std::string name) {
 
 }  // namespace
 
-std::vector<ContactSpec> read_contacts(const TableReader& top) {
+std::vector<ContactSpec> read_contacts(const TableReader& top, ContactUse use) {
   std::vector<ContactSpec> contacts;
   const toml::table* all_contacts = top.raw_table_or_null("contacts");
   if (!all_contacts) return contacts;
@@ -103,7 +109,7 @@ std::vector<ContactSpec> read_contacts(const TableReader& top) {
     keys.insert(keys.end(), profile_keys().begin(), profile_keys().end());
     keys.insert(keys.end(), table_file_keys().begin(), table_file_keys().end());
     const TableReader contact(*node.as_table(), path, top.source(), std::move(keys));
-    contacts.push_back(read_contact(contact, std::string(name.str())));
+    contacts.push_back(read_contact(contact, std::string(name.str()), use));
   }
   return contacts;
 }

@@ -12,7 +12,14 @@
 
 namespace railstab::scene_reading {
 
+// What the contacts are read for: a vehicle model needs every force model
+// (normal and tangential required); the contact geometry alone
+// (contact-geometry, a file of contacts) needs neither: without the keys
+// they take the profile contact's only choices, hertz and kalker_hertz.
+enum class ContactUse { model, geometry_only };
+
 // Every [contacts.<name>] table of the document `top`, in file order.
-std::vector<ContactSpec> read_contacts(const TableReader& top);
+std::vector<ContactSpec> read_contacts(const TableReader& top,
+                                       ContactUse use = ContactUse::model);
 
 }  // namespace railstab::scene_reading

@@ -2,6 +2,7 @@
 
 #include <railstab/io/regular_file.hpp>
 
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -42,10 +43,50 @@ void read_profile_file_key(const TableReader& contact, const std::string& key, s
   path = path_relative_to_file(contact.source(), path);
 }
 
+bool has_profile_file_key(const TableReader& contact, const std::string& key) {
+  return contact.has(key) || contact.has(key + "_mm") || contact.has(key + "_m");
+}
+
+// An optional number in [lo, hi] `unit`.
+std::optional<double> optional_in_range(const TableReader& contact, std::string_view key,
+                                        std::string_view unit, double lo, double hi) {
+  if (!contact.has(key)) return std::nullopt;
+  const double v = contact.number_or(key, unit, 0.0);
+  if (!(v >= lo && v <= hi))
+    contact.fail(key, "a number in [" + format_number(lo) + ", " + format_number(hi) + "] " +
+                          std::string(unit),
+                 format_number(v));
+  return v;
+}
+
 ProfileSourceSpec read_profile_source(const TableReader& contact) {
   ProfileSourceSpec s;
   read_profile_file_key(contact, "wheel_profile", s.wheel_profile_path, s.wheel_unit);
   read_profile_file_key(contact, "rail_profile", s.rail_profile_path, s.rail_unit);
+  // An asymmetric wheelset: the right side's own files, radius, gauge point.
+  if (has_profile_file_key(contact, "right_wheel_profile"))
+    read_profile_file_key(contact, "right_wheel_profile", s.right_wheel_profile_path,
+                          s.right_wheel_unit);
+  if (has_profile_file_key(contact, "right_rail_profile"))
+    read_profile_file_key(contact, "right_rail_profile", s.right_rail_profile_path,
+                          s.right_rail_unit);
+  s.right_nominal_rolling_radius_m =
+      optional_in_range(contact, "right_nominal_rolling_radius_m", "m", 0.1, 1.0);
+  // The gauge point placed by its y in the rail file instead of searched at
+  // gauge_measuring_height_m below the top (profiles/profile_pair.hpp).
+  s.placement.rail_gauge_point_y_m =
+      optional_in_range(contact, "rail_gauge_point_y_m", "m", -0.2, 0.2);
+  s.right_rail_gauge_point_y_m =
+      optional_in_range(contact, "right_rail_gauge_point_y_m", "m", -0.2, 0.2);
+  if (s.placement.rail_gauge_point_y_m && contact.has("gauge_measuring_height_m"))
+    contact.fail("gauge_measuring_height_m",
+                 "no gauge_measuring_height_m together with rail_gauge_point_y_m (the gauge point "
+                 "is either searched at a height or given by its y)",
+                 "both");
+  if (s.right_rail_gauge_point_y_m && !s.placement.rail_gauge_point_y_m)
+    contact.fail_missing("rail_gauge_point_y_m",
+                         "the left rail's gauge point y, required with "
+                         "right_rail_gauge_point_y_m (both rails placed the same way)");
   ProfilePairParameters& p = s.placement;
   p.track_gauge_m = contact.number_or("track_gauge_m", "m", p.track_gauge_m);
   p.gauge_measuring_height_m =
@@ -84,7 +125,10 @@ const std::vector<std::string_view>& profile_keys() {
       "wheel_profile", "wheel_profile_mm", "wheel_profile_m", "rail_profile", "rail_profile_mm",
       "rail_profile_m", "track_gauge_m", "gauge_measuring_height_m", "flange_back_distance_m",
       "rail_inclination_rad", "tape_circle_from_flange_back_m", "table_lateral_half_range_m",
-      "table_lateral_step_m", "table_roll_half_range_rad", "table_roll_step_rad"};
+      "table_lateral_step_m", "table_roll_half_range_rad", "table_roll_step_rad",
+      "right_wheel_profile", "right_wheel_profile_mm", "right_wheel_profile_m",
+      "right_rail_profile", "right_rail_profile_mm", "right_rail_profile_m",
+      "right_nominal_rolling_radius_m", "rail_gauge_point_y_m", "right_rail_gauge_point_y_m"};
   return keys;
 }
 

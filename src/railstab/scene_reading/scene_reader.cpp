@@ -45,7 +45,7 @@ std::vector<ContactSpec> read_contacts_document(const std::string& toml_text,
                                                 const std::string& source_name) {
   const toml::table root = parse_toml(toml_text, source_name);
   const TableReader top(root, "", source_name, kSceneSections);
-  return read_contacts(top);
+  return read_contacts(top, ContactUse::geometry_only);
 }
 
 }  // namespace railstab::scene_reading
