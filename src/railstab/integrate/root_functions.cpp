@@ -113,10 +113,11 @@ RootFunctionSet::TablePosition RootFunctionSet::table_position_in(const Workspac
   const BodyMotion<double>& m = ws.motions[size_t(f.body)];
   // As the contact sees it (wheel_rail.hpp): the wheelset from this rail.
   const RailDisplacement& rail = m.track->rail(f.side);
+  const ProfilePair& pair = pg.pair_for(f.side);  // (each wheel its own on an asymmetric wheelset)
   const WheelPoseOf<double> pose = wheel_pose_in_rail_frame<double>(
-      pg.pair, f.side, m.q(1) - rail.lateral_m, m.q(2) - rail.vertical_m, m.q(3));
+      pair, f.side, m.q(1) - rail.lateral_m, m.q(2) - rail.vertical_m, m.q(3));
   const WheelPoseOf<double> centred = wheel_pose_in_rail_frame<double>(
-      pg.pair, f.side, 0.0, pg.pair.parameters.nominal_rolling_radius_m, 0.0);
+      pair, f.side, 0.0, pair.parameters.nominal_rolling_radius_m, 0.0);
   const ContactTable& table = pg.table_for(f.side);
   TablePosition p;
   p.lateral_m = pose.lateral_m - table.nominal_lateral_m();
