@@ -405,14 +405,16 @@ def _vary_text(key, values):
 
 
 def study(scene, vary, set=None, *, from_=5.0, to=150.0, step=2.5, solver="auto",
-          hunting_band=20.0, jobs=None, progress=None, dataframe=False):
+          hunting_band=20.0, jobs=None, progress=None, dataframe=None):
     """The critical speed over combinations of scene values: ``railstab study``.
 
     ``vary``: {key: (from, to, step)}; a tuple of keys as the key links them
     (one value for all). Returns the study JSON as a Result, plus
       table   the study CSV's columns (index, each varied key, status,
-              critical_speed_m_per_s, ...) as a dict of numpy arrays, or with
-              ``dataframe=True`` as a pandas DataFrame (needs pandas)
+              critical_speed_m_per_s, ...) as a pandas DataFrame where pandas
+              is installed, else as a dict of numpy arrays; ``dataframe=True``
+              insists on the DataFrame (an ImportError without pandas),
+              ``dataframe=False`` asks for the dict
     ``jobs``: threads (default: the machine's cores, as the command).
     """
     path, settings = _scene_and_settings(scene, set)
@@ -423,12 +425,15 @@ def study(scene, vary, set=None, *, from_=5.0, to=150.0, step=2.5, solver="auto"
         jobs = os.cpu_count() or 1
     if isinstance(jobs, bool) or not isinstance(jobs, numbers.Integral) or not 1 <= jobs <= 1024:
         raise InputError(f"jobs: expected a whole number of threads in [1, 1024], got {jobs!r}")
-    if dataframe:
+    if dataframe is None or dataframe:
         try:
             import pandas
+            dataframe = True
         except ImportError:
-            raise ImportError("study(dataframe=True) needs pandas (Debian: apt-get install "
-                              "python3-pandas); without it the table is a dict of arrays") from None
+            if dataframe:
+                raise ImportError("study(dataframe=True) needs pandas (Debian: apt-get install "
+                                  "python3-pandas); without it the table is a dict of arrays") from None
+            dataframe = False
     out = _railstab.study(path, settings, texts, from_, to, step, solver, hunting_band, int(jobs),
                           progress)
     r = _result(out)

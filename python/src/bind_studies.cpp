@@ -11,6 +11,8 @@
 #include <railstab/check/model_check.hpp>
 #include <railstab/contact_geometry/contact_geometry_summary.hpp>
 #include <railstab/contact_geometry/contact_table_file.hpp>
+#include <railstab/contact_geometry/rigid_contact.hpp>
+#include <railstab/scene_reading/scene_error.hpp>
 #include <railstab/io/file_names.hpp>
 #include <railstab/nonlinear/bifurcation_analysis.hpp>
 #include <railstab/report/bifurcation_report.hpp>
@@ -100,10 +102,16 @@ py::dict contact_geometry(const std::string& scene, const std::vector<std::strin
         write_table_contact_geometry_report(g, summary, scene, spec.name, outputs, stem);
       });
     } else {
-      const ProfilePair& pair = spec.profile_geometry->pair;
-      const ContactGeometrySummary summary = summarise_contact_geometry(pair);
+      // As the command: each wheel's own pair (an asymmetric wheelset).
+      const WheelsetProfilePairs pairs = spec.profile_geometry->pairs();
+      ContactGeometrySummary summary;
+      try {
+        summary = summarise_contact_geometry(pairs);
+      } catch (const ContactGeometryError& e) {  // no contact with the wheelset centred
+        throw SceneError(scene + ": contacts." + spec.name + ": " + e.what());
+      }
       files = write_and_read([&](OutputSet& outputs) {
-        write_contact_geometry_report(pair, summary, scene_name, scene, spec.name, outputs, stem, false);
+        write_contact_geometry_report(pairs, summary, scene_name, scene, spec.name, outputs, stem, false);
       });
     }
   }

@@ -39,7 +39,7 @@ def test_study_equals_the_command(cli):
     key = "elements.primary_ws1.stiffness_N_per_m[0]"
     lines = []  # called from the study's two worker threads, one at a time
     r = railstab.study(BOGIE, {key: (5e6, 1.5e7, 5e6)}, from_=20, to=200, step=5, jobs=2,
-                       progress=lines.append)
+                       progress=lines.append, dataframe=False)
     assert len(lines) == 3, lines
     run = cli("study", BOGIE, "--vary", f"{key}=5e6:1.5e7:5e6", "--from", "20", "--to", "200",
               "--step", "5", "--jobs", "2", "--no-plots")
@@ -81,3 +81,15 @@ def test_check_equals_the_command(cli):
     r = railstab.check(BOGIE, speed=30.0)
     run = cli("check", BOGIE, "--speed", "30")
     assert_same_report(r, run.json("_check.json"))
+
+
+def test_study_table_is_a_dataframe_where_pandas_is_installed():
+    key = "elements.primary_ws1.stiffness_N_per_m[0]"
+    r = railstab.study(BOGIE, {key: (5e6, 1e7, 5e6)}, from_=20, to=200, step=5, jobs=1)
+    try:
+        import pandas
+    except ImportError:
+        assert isinstance(r.table, dict)
+    else:
+        assert isinstance(r.table, pandas.DataFrame)
+    assert list(r.table[key]) == [5e6, 1e7]

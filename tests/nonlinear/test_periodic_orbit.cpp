@@ -232,6 +232,42 @@ TEST(OrbitContinuationBautin, BranchFromTheHopfPointGoesRoundTheFold) {
               kHopfSpeed - 0.25, b.cpu_seconds);
 }
 
+// A fold whose turn in speed is below the continuation's speed resolution
+// (10 x the Newton tolerance x V: here 10 x 2e-3 x 10 = 0.2 m/s, larger than
+// the speed steps round the vertex) is still found, by the real multiplier
+// passing +1 between a stable and an unstable orbit (the S1002 bogie's
+// branch turned by 0.005 m/s over two orbits): one fold, between the two
+// orbits where |mu| crosses 1, at alpha = -1/4 to the branch's step.
+TEST(OrbitContinuationBautin, FoldFlatterThanTheSpeedResolutionIsFoundByItsMultiplier) {
+  const FlowSystem s = normal_form(true);
+  HopfStart start;
+  start.equilibrium = Eigen::VectorXd::Zero(3);
+  start.critical_speed_m_per_s = kHopfSpeed;
+  start.eigenvalue = {0.0, kOmega};
+  start.eigenvector = Eigen::VectorXcd::Zero(3);
+  start.eigenvector << 1.0, std::complex<double>(0.0, -1.0), 0.0;
+  start.cycle_side = -1;
+  start.amplitude_per_sqrt_speed = 1.0;
+  ContinuationOptions opt;
+  opt.shooting = tight_shooting();
+  opt.shooting.newton_relative_tolerance = 2e-3;
+  opt.amplitude_scale = 0.1;
+  opt.initial_step = 0.5;
+  opt.max_step = 1.0;
+  opt.max_amplitude = 1.1;
+  const OrbitBranch b = continue_from_hopf(s, kNormalFormCoords, start, 0.05, opt);
+  int folds = 0;
+  double fold_speed = 0.0;
+  for (const OrbitBifurcation& f : b.bifurcations)
+    if (f.kind == OrbitBifurcationKind::fold) ++folds, fold_speed = f.speed_m_per_s;
+  ASSERT_EQ(folds, 1);
+  // The vertex speed changes by ~(step)^2 near the fold: within 0.02 of it.
+  EXPECT_NEAR(fold_speed, kHopfSpeed - 0.25, 0.02);
+  EXPECT_NEAR(lowest_stable_speed(b), kHopfSpeed - 0.25, 0.02);
+  std::printf("[ bautin   ] coarse speed resolution: fold at %.6f (exact %.6f)\n", fold_speed,
+              kHopfSpeed - 0.25);
+}
+
 // The multiplier against the decay of a perturbed run: on the stable orbit
 // r^2 = 0.8 (alpha = 0.64 - 0.8), a start at radius r + d returns after k
 // periods at r + mu^k d (to first order in d).

@@ -87,7 +87,13 @@ void detect_bifurcations(OrbitBranch& branch, int ia, double tolerance, double s
       fold_vertex(o[size_t(k - 2)], o[size_t(k - 1)], o[size_t(k)], ia, ia, b.speed_m_per_s,
                   b.amplitude);
       b.multiplier = multiplier_nearest_unit_circle(o[size_t(k - 1)]);
-      branch.bifurcations.push_back(b);
+      // A fold recorded an orbit earlier from its multiplier passing +1 is
+      // this one: the parabola's vertex is the better estimate of it.
+      OrbitBifurcation* same = nullptr;
+      for (OrbitBifurcation& f : branch.bifurcations)
+        if (f.kind == OrbitBifurcationKind::fold && f.after_orbit >= k - 3) same = &f;
+      if (same) *same = b;
+      else branch.bifurcations.push_back(b);
     }
   }
   // Stability changes other than at a fold: a multiplier leaving or
@@ -96,9 +102,18 @@ void detect_bifurcations(OrbitBranch& branch, int ia, double tolerance, double s
   if (unstable_multipliers(a, tolerance) == unstable_multipliers(c, tolerance)) return;
   const std::complex<double> mu = multiplier_nearest_unit_circle(c);
   const bool real = std::abs(mu.imag()) <= 1e-6 * std::abs(mu);
-  if (real && mu.real() > 0.0) return;  // +1: the fold (recorded above)
+  if (real && mu.real() > 0.0) {
+    // +1: a fold. Recorded above where the speed turned by more than its
+    // resolution; a turn spread over orbits whose speeds differ by less
+    // (the S1002 bogie's branch: 35.0809, 35.0754, 35.0754, 35.0828 m/s) is
+    // found here, by the multiplier passing +1.
+    for (const OrbitBifurcation& f : branch.bifurcations)
+      if (f.kind == OrbitBifurcationKind::fold && f.after_orbit >= k - 3) return;
+  }
   OrbitBifurcation b;
-  b.kind = real ? OrbitBifurcationKind::period_doubling : OrbitBifurcationKind::torus;
+  b.kind = real ? (mu.real() > 0.0 ? OrbitBifurcationKind::fold
+                                   : OrbitBifurcationKind::period_doubling)
+                : OrbitBifurcationKind::torus;
   b.after_orbit = k - 1;
   b.multiplier = mu;
   const double ma = std::abs(multiplier_nearest_unit_circle(a)) - 1.0, mc = std::abs(mu) - 1.0;
