@@ -199,11 +199,25 @@ ContactTable make_contact_table(const ProfilePair& pair, const ContactTableOptio
         const ContactPoint c = direct_slot_contact(pair, grid, slot, pose);
         for (int q = 0; q < kTableQuantities; ++q) at(slot, TableQuantity(q), node) = quantity_of(c, TableQuantity(q));
       }
-      // The saddle between each slot's lowest point and the next one's.
-      for (int slot = 0; slot + 1 < slots; ++slot)
+      // The saddle between each slot's lowest point and the next one's. It
+      // matters only where both overlap the rail together: where either
+      // lowest point is more than kSaddleReach_m above the node's lowest
+      // (no wheel penetrates that far: a static Hertz overlap is ~0.06 mm),
+      // the higher of the two minima stands in for it (a lower bound of the
+      // saddle), which saves scans of the wheel where they cannot matter.
+      constexpr double kSaddleReach_m = 5e-4;
+      double lowest = at(0, TableQuantity::gap0_m, node);
+      for (int slot = 1; slot < slots; ++slot)
+        lowest = std::min(lowest, at(slot, TableQuantity::gap0_m, node));
+      for (int slot = 0; slot + 1 < slots; ++slot) {
+        const double g = at(slot, TableQuantity::gap0_m, node),
+                     g_next = at(slot + 1, TableQuantity::gap0_m, node);
         at(slot, TableQuantity::barrier_to_next_gap0_m, node) =
-            maximum_gap_between(pair, pose, at(slot, TableQuantity::wheel_u_m, node),
-                                at(slot + 1, TableQuantity::wheel_u_m, node));
+            std::max(g, g_next) - lowest > kSaddleReach_m
+                ? std::max(g, g_next)
+                : maximum_gap_between(pair, pose, at(slot, TableQuantity::wheel_u_m, node),
+                                      at(slot + 1, TableQuantity::wheel_u_m, node));
+      }
     }
   return ContactTable::from_node_values(o, grid.nominal_lateral_m_, std::move(borders), values);
 }

@@ -76,8 +76,8 @@ ContactPoint minimum_gap_in_wheel_range(const ProfilePair& pair, const WheelPose
 
 // The highest g on the wheel between u_a and u_b (either order): the saddle
 // an overlap must cross to join the contacts at u_a and u_b (< 0: their
-// overlaps are one connected region). Sampled at kContactSearchStep_m, the
-// largest sample refined by golden section.
+// overlaps are one connected region): the largest sample at
+// kContactSearchStep_m (within ~1e-8 m of the maximum).
 double maximum_gap_between(const ProfilePair& pair, const WheelPose& pose, double u_a, double u_b);
 
 }  // namespace railstab
