@@ -23,10 +23,11 @@ using namespace railstab;
 
 namespace {
 
-// A thesis case with the given contact damping, written to a temporary scene
-// file (the case file with that one value changed).
-PreparedScene case_with_contact_damping(const std::string& case_name, double c_N_s_per_m,
-                                        double speed_m_per_s,
+// A thesis case with the given contact damping (nullopt: the key removed,
+// the scene default), written to a temporary scene file (the case file with
+// that one value changed, its profile files named by their full paths).
+PreparedScene case_with_contact_damping(const std::string& case_name,
+                                        std::optional<double> c_N_s_per_m, double speed_m_per_s,
                                         std::optional<double> arc_length_m = std::nullopt) {
   std::ifstream in(std::string(RAILSTAB_CASES_DIR) + "/" + case_name + ".toml");
   std::stringstream text;
@@ -35,10 +36,14 @@ PreparedScene case_with_contact_damping(const std::string& case_name, double c_N
   const std::string key = "normal_damping_N_s_per_m = 0.0";
   const size_t at = scene.find(key);
   EXPECT_NE(at, std::string::npos);
-  scene.replace(at, key.size(), "normal_damping_N_s_per_m = " + std::to_string(c_N_s_per_m));
+  scene.replace(at, key.size(),
+                c_N_s_per_m ? "normal_damping_N_s_per_m = " + std::to_string(*c_N_s_per_m) : "");
+  for (size_t p = scene.find("\"profiles/"); p != std::string::npos; p = scene.find("\"profiles/", p + 1))
+    scene.insert(p + 1, std::string(RAILSTAB_CASES_DIR) + "/");
   const auto path = std::filesystem::temp_directory_path() /
-                    ("railstab_" + case_name + "_" + std::to_string(int(c_N_s_per_m)) + "_" +
-                     std::to_string(::getpid()) + ".toml");  // unique under parallel ctest
+                    ("railstab_" + case_name + "_" +
+                     (c_N_s_per_m ? std::to_string(int(*c_N_s_per_m)) : std::string("default")) +
+                     "_" + std::to_string(::getpid()) + ".toml");  // unique under parallel ctest
   std::ofstream(path) << scene;
   SceneOverrides o;
   o.speed_m_per_s = speed_m_per_s;
@@ -178,26 +183,9 @@ namespace {
 // when nullopt (the key removed).
 double least_damping_ratio_above(std::optional<double> c_N_s_per_m, double speed_m_per_s,
                                  double above_hz) {
-  std::ifstream in(std::string(RAILSTAB_CASES_DIR) + "/thesis_vehicle_s1002_curve.toml");
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string scene = text.str();
-  const std::string key = "normal_damping_N_s_per_m = 0.0";
-  const size_t at = scene.find(key);
-  EXPECT_NE(at, std::string::npos);
-  scene.replace(at, key.size(),
-                c_N_s_per_m ? "normal_damping_N_s_per_m = " + std::to_string(*c_N_s_per_m) : "");
-  // The profiles are found beside the case, not beside the temporary scene.
-  for (size_t p = scene.find("\"profiles/"); p != std::string::npos; p = scene.find("\"profiles/", p + 1))
-    scene.insert(p + 1, std::string(RAILSTAB_CASES_DIR) + "/");
-  const auto path = std::filesystem::temp_directory_path() /
-                    ("railstab_s1002_curve_default_damping_" + std::to_string(::getpid()) + ".toml");
-  std::ofstream(path.string()) << scene;
-  SceneOverrides o;
-  o.speed_m_per_s = speed_m_per_s;
-  o.reference_arc_length_m = 2000.0;  // 800 m into the arc
-  const PreparedScene s = prepare_scene(path.string(), o);
-  std::filesystem::remove(path);
+  // 800 m into the arc.
+  const PreparedScene s =
+      case_with_contact_damping("thesis_vehicle_s1002_curve", c_N_s_per_m, speed_m_per_s, 2000.0);
   StabilityOptions so;
   so.max_frequency_hz = 1000.0;
   SpeedStability stability(s.model, s.equilibrium.state, s.speed_m_per_s, so);

@@ -182,16 +182,23 @@ TEST(PeriodicOrbitNormalForm, BadGuessesAndCoordinatesAreRefused) {
                ShootingFailure);
 }
 
-TEST(OrbitContinuationBautin, BranchFromTheHopfPointGoesRoundTheFold) {
-  const FlowSystem s = normal_form(true);
+// The Bautin normal form's Hopf point (subcritical: l1 > 0, cycles below
+// V_c; r^2 = -alpha near 0), the start of its branch of orbits.
+HopfStart bautin_hopf_start() {
   HopfStart start;
   start.equilibrium = Eigen::VectorXd::Zero(3);
   start.critical_speed_m_per_s = kHopfSpeed;
   start.eigenvalue = {0.0, kOmega};
   start.eigenvector = Eigen::VectorXcd::Zero(3);
   start.eigenvector << 1.0, std::complex<double>(0.0, -1.0), 0.0;  // x = cos, y = sin
-  start.cycle_side = -1;               // subcritical: l1 > 0, cycles below V_c
-  start.amplitude_per_sqrt_speed = 1.0;  // r^2 = -alpha near 0
+  start.cycle_side = -1;
+  start.amplitude_per_sqrt_speed = 1.0;
+  return start;
+}
+
+TEST(OrbitContinuationBautin, BranchFromTheHopfPointGoesRoundTheFold) {
+  const FlowSystem s = normal_form(true);
+  const HopfStart start = bautin_hopf_start();
   ContinuationOptions opt;
   opt.shooting = tight_shooting();
   opt.amplitude_scale = 0.1;
@@ -240,14 +247,7 @@ TEST(OrbitContinuationBautin, BranchFromTheHopfPointGoesRoundTheFold) {
 // orbits where |mu| crosses 1, at alpha = -1/4 to the branch's step.
 TEST(OrbitContinuationBautin, FoldFlatterThanTheSpeedResolutionIsFoundByItsMultiplier) {
   const FlowSystem s = normal_form(true);
-  HopfStart start;
-  start.equilibrium = Eigen::VectorXd::Zero(3);
-  start.critical_speed_m_per_s = kHopfSpeed;
-  start.eigenvalue = {0.0, kOmega};
-  start.eigenvector = Eigen::VectorXcd::Zero(3);
-  start.eigenvector << 1.0, std::complex<double>(0.0, -1.0), 0.0;
-  start.cycle_side = -1;
-  start.amplitude_per_sqrt_speed = 1.0;
+  const HopfStart start = bautin_hopf_start();
   ContinuationOptions opt;
   opt.shooting = tight_shooting();
   opt.shooting.newton_relative_tolerance = 2e-3;

@@ -10,6 +10,17 @@ namespace railstab {
 
 RootFunctionSet::RootFunctionSet(const Model& model, double speed_m_per_s)
     : model_(&model), speed_m_per_s_(speed_m_per_s) {
+  // One function of `kind` per wheel of wheelset b.
+  auto add_wheels = [&](RootFunction::Kind kind, int b) {
+    for (int side : {1, -1}) {
+      RootFunction f;
+      f.kind = kind;
+      f.body = b;
+      f.side = side;
+      functions_.push_back(f);
+    }
+    has_wheels_ = true;
+  };
   for (int b = 0; b < int(model.bodies.size()); ++b) {
     const Body& body = model.bodies[size_t(b)];
     if (!body.wheelset()) continue;
@@ -19,14 +30,7 @@ RootFunctionSet::RootFunctionSet(const Model& model, double speed_m_per_s)
     // overlap; the table's slots) without events; the run stops only where
     // a wheel reaches the edge of its table.
     if (uses_contact_table(model.contacts[size_t(contact)].spec.geometry)) {
-      for (int side : {1, -1}) {
-        RootFunction f;
-        f.kind = RootFunction::Kind::table_edge;
-        f.body = b;
-        f.side = side;
-        functions_.push_back(f);
-      }
-      has_wheels_ = true;
+      add_wheels(RootFunction::Kind::table_edge, b);
       continue;
     }
     const int k = body.state_index[int(CoordinateIndex::y)];
@@ -40,14 +44,7 @@ RootFunctionSet::RootFunctionSet(const Model& model, double speed_m_per_s)
     }
     // A prescribed wheel load never lifts off.
     if (model.contacts[size_t(contact)].spec.normal != NormalForceKind::hertz) continue;
-    for (int side : {1, -1}) {
-      RootFunction f;
-      f.kind = RootFunction::Kind::wheel_contact;
-      f.body = b;
-      f.side = side;
-      functions_.push_back(f);
-      has_wheels_ = true;
-    }
+    add_wheels(RootFunction::Kind::wheel_contact, b);
   }
   // The penetration does not depend on the force laws; with a prescribed zero
   // load and no creep, evaluate_wheel_contact stops after the geometry.
