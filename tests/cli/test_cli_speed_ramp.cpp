@@ -39,3 +39,31 @@ TEST(CliSpeedRamp, TwoRatesInOneReport) {
   EXPECT_NE(run.output.find("note: The hunting end speed of a ramp depends on the ramp rate"),
             std::string::npos);
 }
+
+// Issue 22: the ramp method against the continuation on S1002/UIC60. The
+// thesis bogie's flange-hunting cycle (5.2 mm at 41 m/s, the run from 5 mm)
+// is stable down to the fold of its branch at 35.08 m/s (`bifurcation
+// --cycle-speed 41 --no-hopf-branch`, docs/nonlinear.md); a ramp follows the
+// stable cycle, so it cannot lose its hunting above the fold, and it loses it
+// below by a delay that shrinks with the rate. Measured: 30.36 m/s at
+// 0.5 m/s^2, 32.33 m/s at 0.2 m/s^2 (11 s CPU for both).
+TEST(CliSpeedRamp, S1002BogieEndsHuntingBelowTheFoldOfItsCycleBranch) {
+  const fs::path dir = test::fresh_dir("cli_ramp", "s1002");
+  const test::CliRun run = test::run_railstab(
+      {"simulate", test::case_path("thesis_bogie_s1002_tangent"), "--speed", "41", "--offset",
+       "wheelset1.y_m=0.005", "--ramp-rate", "0.5", "--ramp-rate", "0.2", "--ramp-to", "30", "--set",
+       "track.segments[0].length_m=5000", "--no-plots", "--out", "out"},
+      dir);
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const std::string json = test::read_text(dir / "out" / "thesis_bogie_s1002_tangent_41mps_ramp.json");
+  const std::regex end_speed("\"hunting_end_speed_m_per_s\": ([0-9.]+)");
+  std::vector<double> ends;
+  for (auto it = std::sregex_iterator(json.begin(), json.end(), end_speed); it != std::sregex_iterator(); ++it)
+    ends.push_back(std::stod((*it)[1].str()));
+  ASSERT_EQ(ends.size(), 2u) << json;
+  const double fold_m_per_s = 35.08;
+  EXPECT_LT(ends[0], fold_m_per_s);
+  EXPECT_LT(ends[1], fold_m_per_s);
+  EXPECT_GT(ends[1], ends[0]);  // the slower ramp (0.2) nearer the fold
+  fs::remove_all(dir);
+}
