@@ -12,6 +12,19 @@
 namespace fs = std::filesystem;
 using namespace railstab;
 
+namespace {
+
+// The ramps' hunting end speeds in a ramp JSON, in the order of the rates.
+std::vector<double> hunting_end_speeds(const std::string& json) {
+  const std::regex end_speed("\"hunting_end_speed_m_per_s\": ([0-9.]+)");
+  std::vector<double> ends;
+  for (auto it = std::sregex_iterator(json.begin(), json.end(), end_speed); it != std::sregex_iterator(); ++it)
+    ends.push_back(std::stod((*it)[1].str()));
+  return ends;
+}
+
+}  // namespace
+
 TEST(CliSpeedRamp, TwoRatesInOneReport) {
   const fs::path dir = test::fresh_dir("cli_ramp", "two_rates");
   const test::CliRun run = test::run_railstab(
@@ -21,10 +34,7 @@ TEST(CliSpeedRamp, TwoRatesInOneReport) {
       dir);
   ASSERT_EQ(run.exit_code, 0) << run.output;
   const std::string json = test::read_text(dir / "out" / "thesis_bogie_tangent_36.95mps_ramp.json");
-  const std::regex end_speed("\"hunting_end_speed_m_per_s\": ([0-9.]+)");
-  std::vector<double> ends;
-  for (auto it = std::sregex_iterator(json.begin(), json.end(), end_speed); it != std::sregex_iterator(); ++it)
-    ends.push_back(std::stod((*it)[1].str()));
+  const std::vector<double> ends = hunting_end_speeds(json);
   ASSERT_EQ(ends.size(), 2u) << json;
   // Below the Hopf point (36.90 m/s) and the slower ramp (0.1) nearer to it.
   EXPECT_LT(ends[0], 36.90);
@@ -56,10 +66,7 @@ TEST(CliSpeedRamp, S1002BogieEndsHuntingBelowTheFoldOfItsCycleBranch) {
       dir);
   ASSERT_EQ(run.exit_code, 0) << run.output;
   const std::string json = test::read_text(dir / "out" / "thesis_bogie_s1002_tangent_41mps_ramp.json");
-  const std::regex end_speed("\"hunting_end_speed_m_per_s\": ([0-9.]+)");
-  std::vector<double> ends;
-  for (auto it = std::sregex_iterator(json.begin(), json.end(), end_speed); it != std::sregex_iterator(); ++it)
-    ends.push_back(std::stod((*it)[1].str()));
+  const std::vector<double> ends = hunting_end_speeds(json);
   ASSERT_EQ(ends.size(), 2u) << json;
   const double fold_m_per_s = 35.02;
   EXPECT_LT(ends[0], fold_m_per_s);

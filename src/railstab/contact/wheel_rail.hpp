@@ -52,7 +52,7 @@
 // separate overlaps (b >= 0) each slot keeps its own d. The penetration is
 // d_eff cos(gamma). Without this, the force doubled within one table cell
 // where a second tread slot's lowest point left its border while
-// overlapping (docs/model.md, section 6.2).
+// overlapping (docs/model.md, section 6.1).
 //
 // Contact frame: l = x_I (rolling direction), nu = normal from the rail into
 // the wheel, t = nu x l (lateral, in the contact plane). Creepages (ERRATA 10,
@@ -201,11 +201,12 @@ T shared_overlap_m(const ContactTable& table, const WheelPoseOf<T>& pose, int sl
   T shared = T(0);
   for (const int j : {slot - 1, slot + 1}) {
     if (j < 0 || j >= table.slots()) continue;
-    const T gap_j = table.vertical_gap<T>(j, pose);
-    if (value_of(gap_j) >= 0.0) continue;
-    const T barrier = table.barrier_to_next_gap<T>(std::min(slot, j), pose);
+    const ContactTable::Neighbour<T> n = table.neighbour<T>(slot, j, pose);
+    if (!n.overlaps) continue;
+    const T& gap_j = n.vertical_gap_m;
+    const T& barrier = n.saddle_gap_m;
     if (value_of(barrier) >= 0.0) continue;  // separate overlaps
-    const T w_j = table.interior_weight<T>(j, pose);
+    const T& w_j = n.interior_weight;
     if (value_of(w_j) <= 0.0) continue;
     // The saddle lies between the two lowest points, so it is no deeper than
     // the shallower of them; the interpolated tables can disagree by their

@@ -110,11 +110,16 @@ class ContactTable {
   template <class T> TableContact<T> evaluate(int slot, const WheelPoseOf<T>& pose) const;
   // The vertical gap alone (g0 + vertical), the cheap test for contact.
   template <class T> T vertical_gap(int slot, const WheelPoseOf<T>& pose) const;
-  // The vertical gap of the saddle between the lowest points of `slot` and
-  // `slot + 1` (barrier_to_next_gap0_m + vertical; < 0: their overlaps join).
-  template <class T> T barrier_to_next_gap(int slot, const WheelPoseOf<T>& pose) const;
-  // The slot's interior weight alone (TableContact::interior_weight).
-  template <class T> T interior_weight(int slot, const WheelPoseOf<T>& pose) const;
+  // What the shared overlap (wheel_rail.hpp) needs of slot j = slot +- 1 at
+  // a pose, from one cell lookup: j's vertical gap; where j overlaps, the
+  // vertical gap of the saddle between the lowest points of the two
+  // (barrier_to_next_gap0_m of the lower slot + vertical; < 0: their
+  // overlaps join) and j's interior weight (TableContact::interior_weight).
+  template <class T> struct Neighbour {
+    T vertical_gap_m, saddle_gap_m, interior_weight;
+    bool overlaps;  // vertical_gap_m < 0; the other two are set only then
+  };
+  template <class T> Neighbour<T> neighbour(int slot, int j, const WheelPoseOf<T>& pose) const;
   // The lowest vertical gap over all slots (< 0: the wheel overlaps its rail).
   double lowest_vertical_gap(const WheelPoseOf<double>& pose) const {
     double lowest = vertical_gap<double>(0, pose);
@@ -259,12 +264,6 @@ template <class T> T ContactTable::vertical_gap(int slot, const WheelPoseOf<T>& 
   return interpolate(slot, TableQuantity::gap0_m, locate(slot, pose)) + pose.vertical_m;
 }
 
-template <class T>
-T ContactTable::barrier_to_next_gap(int slot, const WheelPoseOf<T>& pose) const {
-  return interpolate(slot, TableQuantity::barrier_to_next_gap0_m, locate(slot, pose)) +
-         pose.vertical_m;
-}
-
 namespace contact_table_detail {
 // Smoothstep of 1 - on_border, u -> 3u^2 - 2u^3 on [0, 1], constant outside:
 // C1 also where the interpolant leaves [0, 1] (a plain clamp would kink).
@@ -278,9 +277,17 @@ template <class T> T interior_weight_of(const T& border) {
 }  // namespace contact_table_detail
 
 template <class T>
-T ContactTable::interior_weight(int slot, const WheelPoseOf<T>& pose) const {
-  return contact_table_detail::interior_weight_of(
-      interpolate(slot, TableQuantity::on_border, locate(slot, pose)));
+ContactTable::Neighbour<T> ContactTable::neighbour(int slot, int j, const WheelPoseOf<T>& pose) const {
+  const Cell<T> cell = locate(j, pose);
+  Neighbour<T> n;
+  n.vertical_gap_m = interpolate(j, TableQuantity::gap0_m, cell) + pose.vertical_m;
+  n.overlaps = value_of(n.vertical_gap_m) < 0.0;
+  if (!n.overlaps) return n;
+  n.saddle_gap_m =
+      interpolate(std::min(slot, j), TableQuantity::barrier_to_next_gap0_m, cell) + pose.vertical_m;
+  n.interior_weight =
+      contact_table_detail::interior_weight_of(interpolate(j, TableQuantity::on_border, cell));
+  return n;
 }
 
 template <class T>

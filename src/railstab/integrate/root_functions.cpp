@@ -104,7 +104,8 @@ void RootFunctionSet::evaluate(double t_s, const Eigen::Ref<const Eigen::VectorX
 }
 
 RootFunctionSet::TablePosition RootFunctionSet::table_position_in(const Workspace<double>& ws,
-                                                                  const RootFunction& f) const {
+                                                                  const RootFunction& f,
+                                                                  bool with_lift) const {
   const ModelContact& c = model_->contacts[size_t(model_->bodies[size_t(f.body)].wheelset()->contact)];
   const ProfileContactGeometry& pg = *c.spec.profile_geometry;
   const BodyMotion<double>& m = ws.motions[size_t(f.body)];
@@ -113,15 +114,17 @@ RootFunctionSet::TablePosition RootFunctionSet::table_position_in(const Workspac
   const ProfilePair& pair = pg.pair_for(f.side);  // (each wheel its own on an asymmetric wheelset)
   const WheelPoseOf<double> pose = wheel_pose_in_rail_frame<double>(
       pair, f.side, m.q(1) - rail.lateral_m, m.q(2) - rail.vertical_m, m.q(3));
-  const WheelPoseOf<double> centred = wheel_pose_in_rail_frame<double>(
-      pair, f.side, 0.0, pair.parameters.nominal_rolling_radius_m, 0.0);
   const ContactTable& table = pg.table_for(f.side);
   TablePosition p;
   p.lateral_m = pose.lateral_m - table.nominal_lateral_m();
   p.half_range_m = table.options().lateral_half_range_m;
   p.roll_rad = pose.roll_rad;
   p.roll_half_range_rad = table.options().roll_half_range_rad;
-  p.lift_m = pose.vertical_m - centred.vertical_m;
+  if (with_lift) {  // for the stop message only, not the root function
+    const WheelPoseOf<double> centred = wheel_pose_in_rail_frame<double>(
+        pair, f.side, 0.0, pair.parameters.nominal_rolling_radius_m, 0.0);
+    p.lift_m = pose.vertical_m - centred.vertical_m;
+  }
   return p;
 }
 
@@ -129,7 +132,7 @@ RootFunctionSet::TablePosition RootFunctionSet::table_position(
     int i, double t_s, const Eigen::Ref<const Eigen::VectorXd>& x) const {
   Workspace<double> ws;
   compute_all_body_motions<double>(*model_, ws, t_s, speed_m_per_s_, x);
-  return table_position_in(ws, functions_[size_t(i)]);
+  return table_position_in(ws, functions_[size_t(i)], true);
 }
 
 std::string RootFunctionSet::wheel_name(int i) const {

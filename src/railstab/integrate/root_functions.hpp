@@ -66,7 +66,8 @@ class RootFunctionSet {
   TablePosition table_position(int i, double t_s, const Eigen::Ref<const Eigen::VectorXd>& x) const;
 
  private:
-  TablePosition table_position_in(const Workspace<double>& ws, const RootFunction& f) const;
+  TablePosition table_position_in(const Workspace<double>& ws, const RootFunction& f,
+                                  bool with_lift = false) const;
   const Model* model_;
   double speed_m_per_s_;
   std::vector<RootFunction> functions_;

@@ -71,6 +71,14 @@ void fold_vertex(const PeriodicOrbit& p, const PeriodicOrbit& c, const PeriodicO
 // relative tolerance on V), not a turn of the branch (a branch at nearly
 // constant speed, as a nearly linear model's, would show "folds" at every
 // orbit).
+// A fold recorded within the last three orbits before orbit k: the speed's
+// turn and the multiplier's passing +1 mark the same fold an orbit apart.
+OrbitBifurcation* recent_fold(OrbitBranch& branch, int k) {
+  for (OrbitBifurcation& f : branch.bifurcations)
+    if (f.kind == OrbitBifurcationKind::fold && f.after_orbit >= k - 3) return &f;
+  return nullptr;
+}
+
 void detect_bifurcations(OrbitBranch& branch, int ia, double tolerance, double speed_resolution) {
   const auto& o = branch.orbits;
   const int k = int(o.size()) - 1;  // the orbit just added
@@ -89,15 +97,12 @@ void detect_bifurcations(OrbitBranch& branch, int ia, double tolerance, double s
       b.multiplier = multiplier_nearest_unit_circle(o[size_t(k - 1)]);
       // A fold recorded an orbit earlier from its multiplier passing +1 is
       // this one: the parabola's vertex is the better estimate of it.
-      OrbitBifurcation* same = nullptr;
-      for (OrbitBifurcation& f : branch.bifurcations)
-        if (f.kind == OrbitBifurcationKind::fold && f.after_orbit >= k - 3) same = &f;
-      if (same) *same = b;
+      if (OrbitBifurcation* same = recent_fold(branch, k)) *same = b;
       else branch.bifurcations.push_back(b);
     }
   }
-  // Stability changes other than at a fold: a multiplier leaving or
-  // entering the unit circle at -1 or as a complex pair.
+  // Stability changes: a multiplier leaving or entering the unit circle at
+  // -1 or as a complex pair, or at +1 (a fold the speed's turn missed).
   const PeriodicOrbit &a = o[size_t(k - 1)], &c = o[size_t(k)];
   if (unstable_multipliers(a, tolerance) == unstable_multipliers(c, tolerance)) return;
   const std::complex<double> mu = multiplier_nearest_unit_circle(c);
@@ -107,8 +112,7 @@ void detect_bifurcations(OrbitBranch& branch, int ia, double tolerance, double s
     // resolution; a turn spread over orbits whose speeds differ by less
     // (the S1002 bogie's branch: 35.0809, 35.0754, 35.0754, 35.0828 m/s) is
     // found here, by the multiplier passing +1.
-    for (const OrbitBifurcation& f : branch.bifurcations)
-      if (f.kind == OrbitBifurcationKind::fold && f.after_orbit >= k - 3) return;
+    if (recent_fold(branch, k)) return;
   }
   OrbitBifurcation b;
   b.kind = real ? (mu.real() > 0.0 ? OrbitBifurcationKind::fold
