@@ -30,6 +30,13 @@ class GapFunction {
     const double d2Y = -w.d2f * s_, d2Z = w.d2f * c_;
     return {Z - r.f, dZ - r.df * dY, d2Z - r.d2f * dY * dY - r.df * d2Y, Y};
   }
+  // at(u).g alone (the same expressions, so the same bits), for the samples.
+  double gap(double u) const {
+    const double w = pair_.wheel_z(u);
+    const double Y = pose_.lateral_m + u * c_ - w * s_;
+    const double Z = pose_.vertical_m + u * s_ + w * c_;
+    return Z - pair_.rail_z(Y);
+  }
   double rail_y(double u) const { return pose_.lateral_m + u * c_ - pair_.wheel_z(u) * s_; }
 
   // Wheel range [u0, u1] whose points lie above the rail profile (Y within
@@ -119,7 +126,7 @@ void sample(const GapFunction& f, double u0, double u1, std::vector<double>& u,
   g.resize(n);
   for (int i = 0; i < n; ++i) {
     u[i] = u0 + (u1 - u0) * double(i) / double(n - 1);
-    g[i] = f.at(u[i]).g;
+    g[i] = f.gap(u[i]);
   }
 }
 

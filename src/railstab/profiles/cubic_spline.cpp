@@ -17,6 +17,15 @@ CubicSpline::CubicSpline(std::vector<double> x, std::vector<double> f)
   for (size_t i = 1; i < n; ++i)
     if (!(x_[i] > x_[i - 1]))
       throw std::invalid_argument("CubicSpline: knots must be strictly increasing");
+  // One bucket per knot interval on average.
+  const size_t buckets = n - 1;
+  bucket_width_ = (x_.back() - x_.front()) / double(buckets);
+  bucket_interval_.resize(buckets);
+  for (size_t b = 0, i = 0; b < buckets; ++b) {
+    const double left = x_.front() + double(b) * bucket_width_;
+    while (i + 2 < n && x_[i + 1] <= left) ++i;
+    bucket_interval_[b] = i;
+  }
   m_.assign(n, 0.0);
   if (n < 3) return;
   std::vector<double> diag(n, 0.0), upper(n, 0.0), rhs(n, 0.0);
@@ -40,10 +49,27 @@ CubicSpline::CubicSpline(std::vector<double> x, std::vector<double> f)
 }
 
 size_t CubicSpline::interval(double x) const {
+  const size_t n = x_.size();
   if (x <= x_.front()) return 0;
-  if (x >= x_.back()) return x_.size() - 2;
-  const auto it = std::upper_bound(x_.begin(), x_.end(), x);
-  return size_t(it - x_.begin()) - 1;
+  if (x >= x_.back()) return n - 2;
+  // The bucket's interval is near; walk to the largest i with x_i <= x (the
+  // walk makes the answer exact whatever the bucket's rounding).
+  const double b = (x - x_.front()) / bucket_width_;
+  const size_t last = bucket_interval_.size() - 1;
+  size_t i = bucket_interval_[b >= 0.0 && b < double(last) ? size_t(b) : last];
+  while (i > 0 && x_[i] > x) --i;
+  while (i + 2 < n && x_[i + 1] <= x) ++i;
+  return i;
+}
+
+double CubicSpline::operator()(double x) const {
+  if (x < x_.front() || x > x_.back()) return evaluate(x).f;
+  const size_t i = std::min(interval(x), x_.size() - 2);
+  const double h = x_[i + 1] - x_[i];
+  const double a = (x_[i + 1] - x) / h, b = (x - x_[i]) / h;
+  // As evaluate()'s f.
+  return a * f_[i] + b * f_[i + 1] +
+         ((a * a * a - a) * m_[i] + (b * b * b - b) * m_[i + 1]) * h * h / 6.0;
 }
 
 CubicSpline::Value CubicSpline::evaluate(double x) const {
