@@ -285,62 +285,110 @@ SteadyCurvingState solve_steady_curving(const Model& scene_model, const CurvingC
   } catch (const EquilibriumError&) {
   }
 
-  // 2. Continuation from the known solution, or from a start that Newton
-  // reaches from the nominal position: the target arc at the start speed,
-  // then the straight at the start speed.
-  std::vector<std::pair<CurvingCondition, Eigen::VectorXd>> starts;
-  std::string failures;
+  // 2. With a known solution: continuation from it to the target.
   if (from) {
-    starts.emplace_back(from->condition, from->equilibrium.state);
-  } else {
-    const double V0 = std::min(options.start_speed_m_per_s, V);
-    for (const CurvingCondition c : {CurvingCondition{target.curvature_per_m, target.cant_m, V0},
-                                     CurvingCondition{0.0, 0.0, V0}}) {
-      const Model m = uniform_arc_model(scene_model, c.curvature_per_m, c.cant_m);
-      try {
-        starts.emplace_back(c, solve_equilibrium(m, V0, lowered_nominal_state(m, V0)).state);
-      } catch (const EquilibriumError& e) {
-        failures += std::string(failures.empty() ? "" : "; ") + "no start at " +
-                    describe_condition(c, D, g) + " (" + e.what() + ")";
-      }
-    }
-  }
-  std::optional<PathOutcome> best;
-  for (const auto& [c0, x0] : starts) {
-    CurvingPath path(scene_model, c0, target);
-    PathOutcome o = follow(path, x0, [&](double l) { return path.at(l); },
-                           describe_condition(c0, D, g), target_text, options, D, g);
+    CurvingPath path(scene_model, from->condition, target);
+    const std::string from_text = describe_condition(from->condition, D, g);
+    PathOutcome o = follow(path, from->equilibrium.state, [&](double l) { return path.at(l); },
+                           from_text, target_text, options, D, g);
     if (o.reached) return finish(*o.reached);
     if (o.physical) throw CurvingError(o.why, true, o.last);
-    failures += std::string(failures.empty() ? "" : "; ") + o.why;
-    if (!best) best = std::move(o);
+    throw CurvingError("no steady state found at " + target_text + ": Newton's method from " +
+                           from_text + " does not converge; " + o.why,
+                       false, o.last);
   }
-  throw CurvingError("no steady state found at " + target_text + ": Newton's method from " +
-                         (from ? describe_condition(from->condition, D, g) : std::string("the nominal position")) +
-                         " does not converge; " + (failures.empty() ? std::string("no start") : failures),
-                     false, best ? best->last : std::nullopt);
+  // 3. Without one: a start that Newton reaches from the nominal position
+  // (the target arc at the start speed, in cant excess; else the straight
+  // at that speed), then a march to the target in steps of about 2.5 m/s
+  // or 25 mm of cant deficiency (the sweeps' steps), each from the previous
+  // point: Newton where it converges, continuation where it does not. A
+  // continuation over the whole way at once would cross every contact
+  // transition with its plain Newton corrector; the march crosses them
+  // with the equilibrium solver's line search.
+  const double V0 = std::min(options.start_speed_m_per_s, V);
+  std::string failures;
+  std::optional<SteadyCurvingState> start;
+  for (const CurvingCondition c : {CurvingCondition{target.curvature_per_m, target.cant_m, V0},
+                                   CurvingCondition{0.0, 0.0, V0}}) {
+    const Model m = uniform_arc_model(scene_model, c.curvature_per_m, c.cant_m);
+    try {
+      SteadyCurvingState s;
+      s.condition = c;
+      s.cant_deficiency_m = cant_deficiency_m(c, D, g);
+      s.equilibrium = solve_equilibrium(m, V0, lowered_nominal_state(m, V0));
+      s.method = "Newton";
+      start = std::move(s);
+      break;
+    } catch (const EquilibriumError& e) {
+      failures += std::string(failures.empty() ? "" : "; ") + "no start at " +
+                  describe_condition(c, D, g) + " (" + e.what() + ")";
+    }
+  }
+  if (!start)
+    throw CurvingError("no steady state found at " + target_text +
+                           ": Newton's method from the nominal position does not converge, and " +
+                           failures,
+                       false, std::nullopt);
+  const CurvingPath whole(scene_model, start->condition, target);
+  const int n = std::max(1, int(std::ceil(whole.length_scale() / options.march_step)));
+  std::optional<SteadyCurvingState> previous = start;
+  int steps = 0;
+  for (int i = 1; i <= n; ++i) {
+    const CurvingCondition c = i == n ? target : whole.at(double(i) / n);
+    SteadyCurvingState s = solve_steady_curving(scene_model, c, previous, options);
+    steps += s.continuation_steps;
+    previous = std::move(s);
+  }
+  previous->method = "march from " + describe_condition(start->condition, D, g) + " in " +
+                     std::to_string(n) + " steps (" + std::to_string(steps) +
+                     " continuation steps)";
+  previous->continuation_steps = steps;
+  return *previous;
 }
 
 SteadyCurvingState continue_scene_steady_state(const Model& model, double from_speed_m_per_s,
                                                const Eigen::VectorXd& from_state, double V,
                                                const SteadyCurvingOptions& options) {
   const double D = model.track.spec().rail_contact_distance_m, g = model.gravity_m_per_s2;
-  SceneSpeedPath path(model, from_speed_m_per_s, V);
-  const std::string from_text =
-      describe_condition(condition_at_reference(model, from_speed_m_per_s), D, g);
-  PathOutcome o = follow(path, from_state,
-                         [&](double l) { return condition_at_reference(model, path.speed_at(l)); },
-                         from_text, describe_condition(condition_at_reference(model, V), D, g),
-                         options, D, g);
-  if (o.reached) {
-    const std::string limit = physical_limit(model, V, o.reached->equilibrium.state);
+  // A march in speed in steps of options.march_step m/s: Newton from the
+  // previous point, else the continuation from it.
+  double v = from_speed_m_per_s;
+  Eigen::VectorXd x = from_state;
+  int steps = 0;
+  std::optional<SteadyCurvingState> reached;
+  while (!reached || v != V) {
+    const double next = std::abs(V - v) <= options.march_step ? V : v + std::copysign(options.march_step, V - v);
+    const CurvingCondition c = condition_at_reference(model, next);
+    SteadyCurvingState s;
+    s.condition = c;
+    s.cant_deficiency_m = cant_deficiency_m(c, D, g);
+    try {
+      s.equilibrium = solve_equilibrium(model, next, rescaled_to_speed(model, x, v, next), newton_only(options));
+      s.method = "Newton";
+    } catch (const EquilibriumError&) {
+      SceneSpeedPath path(model, v, next);
+      const std::string from_text = describe_condition(condition_at_reference(model, v), D, g);
+      PathOutcome o = follow(path, x,
+                             [&](double l) { return condition_at_reference(model, path.speed_at(l)); },
+                             from_text, describe_condition(condition_at_reference(model, V), D, g),
+                             options, D, g);
+      if (!o.reached) throw CurvingError(o.why, o.physical, o.last);
+      s = *o.reached;
+      steps += s.continuation_steps;
+    }
+    const std::string limit = physical_limit(model, next, s.equilibrium.state);
     if (!limit.empty())
       throw CurvingError("no steady state physically at " +
-                             describe_condition(o.reached->condition, D, g) + ": " + limit,
-                         true, o.reached);
-    return *o.reached;
+                             describe_condition(condition_at_reference(model, V), D, g) +
+                             ": followed up in speed, the steady state reaches the limit at " +
+                             describe_condition(c, D, g) + ": " + limit,
+                         true, s);
+    v = next;
+    x = s.equilibrium.state;
+    reached = std::move(s);
   }
-  throw CurvingError(o.why, o.physical, o.last);
+  reached->continuation_steps = steps;
+  return *reached;
 }
 
 CurvingPoint curving_point(const Model& scene_model, const SteadyCurvingState& s,

@@ -112,14 +112,19 @@ struct SteadyCurvingOptions {
   // Where no solution is known: the speed of the first solve (on the target
   // arc, from the nominal position), from which the continuation starts.
   double start_speed_m_per_s = 5.0;
+  // A march to a far target goes in steps of this many units of the path's
+  // length scale (about m/s of speed or cm of cant deficiency).
+  double march_step = 2.5;
   ArclengthOptions continuation;  // tolerance and stop are set per call
 };
 
 // The steady state at `target` on a uniform arc of `scene_model`'s vehicle.
-// `from`: a converged steady state to start from (a sweep's previous point);
-// without it, Newton from the nominal position, then continuation from
-// options.start_speed_m_per_s on the target arc, then from the straight at
-// that speed. Throws CurvingError.
+// `from`: a converged steady state to start from (a sweep's previous point):
+// Newton from it, else the continuation from it. Without it: Newton from
+// the nominal position, else a march from options.start_speed_m_per_s on
+// the target arc (or, where Newton fails there, on the straight) to the
+// target in steps of options.march_step, each as with `from`. Throws
+// CurvingError.
 SteadyCurvingState solve_steady_curving(const Model& scene_model, const CurvingCondition& target,
                                         const std::optional<SteadyCurvingState>& from = {},
                                         const SteadyCurvingOptions& options = {});
