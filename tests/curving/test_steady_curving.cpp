@@ -97,7 +97,13 @@ TEST(SteadyCurvingCoach, IssuePointFoundByContinuationIsNewtonsSolutionThere) {
   // (1e-8 m/s^2: the rounding floor of the residual is ~5e-9 here).
   const EquilibriumResult polished = solve_equilibrium(arc, 57.5, s.equilibrium.state, newton_only(1e-8));
   EXPECT_LE((polished.state - s.equilibrium.state).cwiseAbs().maxCoeff(), 1e-9);
-  expect_force_balance(curving_point(scene, s, 1.0));
+  const CurvingPoint p = curving_point(scene, s, 1.0);
+  expect_force_balance(p);
+  // The steady state there lies on the branch between the two folds that
+  // bound the tread branch (~183 mm) and the flange branch (~280 mm): it is
+  // unstable (divergent), and said so (the eigenvalues: tests/eigen).
+  EXPECT_FALSE(p.stability.stable()) << p.stability.describe();
+  EXPECT_GE(p.stability.divergent, 1);
 }
 
 // `equilibrium` on the scene's own track (prepare_scene) finds the same
@@ -117,7 +123,7 @@ TEST(SteadyCurvingCoach, EquilibriumCommandReachesTheIssuePoint) {
 // From cant excess (-100 mm) to 300 mm cant deficiency in 50 mm steps, each
 // point continued from the previous one: every point is found, balances
 // its lateral forces and stays within Nadal's limit (R 1500 m is a wide
-// curve: Y/Q stays below 0.3). About 1 s.
+// curve: Y/Q stays below 0.4). About 2 s.
 TEST(SteadyCurvingCoach, SweepFromCantExcessToThreeHundredMillimetres) {
   const Model scene = model_of(kCoach);
   std::vector<double> h_d;
@@ -133,6 +139,15 @@ TEST(SteadyCurvingCoach, SweepFromCantExcessToThreeHundredMillimetres) {
     expect_force_balance(p);
     EXPECT_TRUE(p.nadal_warning.empty()) << p.nadal_warning;
   }
+  // Below the tread branch's fold (~183 mm) every state is stable; at
+  // 300 mm the stable state is the one with the trailing wheelsets on
+  // their flanges (found from the nominal position: the continued one is
+  // unstable there).
+  for (size_t i = 0; i < h_d.size(); ++i)
+    if (h_d[i] < 0.18) EXPECT_TRUE(sweep.points[i].stability.stable()) << h_d[i];
+  const CurvingPoint& last = sweep.points.back();
+  EXPECT_TRUE(last.stability.stable()) << last.stability.describe();
+  EXPECT_TRUE(last.wheelsets[1].right_flange || last.wheelsets[3].right_flange);
   // At 300 mm the vehicle needs 1.95 m/s^2 in the track plane.
   EXPECT_NEAR(sweep.points.back().lateral_acceleration_m_per_s2,
               std::pow(speed_for_cant_deficiency(1.0 / 1500.0, 0.15, 0.3, 1.5, 9.81), 2) / 1500.0 *

@@ -3,6 +3,9 @@
 #include <railstab/core/coordinates.hpp>
 #include <railstab/equilibrium/speed_continuation.hpp>
 #include <railstab/integrate/root_functions.hpp>
+#include <railstab/linear/jacobian.hpp>
+
+#include <Eigen/Eigenvalues>
 #include <railstab/ride/wheelset_forces.hpp>
 
 #include <algorithm>
@@ -128,6 +131,39 @@ std::string physical_limit(const Model& model, double V, const Eigen::VectorXd& 
     return s.str();
   }
   return "";
+}
+
+std::string SteadyStateStability::describe() const {
+  if (stable()) return "stable";
+  std::ostringstream s;
+  s << std::setprecision(3) << "unstable: ";
+  if (divergent > 0) s << divergent << " divergent mode(s)";
+  if (divergent > 0 && oscillatory > 0) s << " and ";
+  if (oscillatory > 0) s << oscillatory << " growing oscillation(s)";
+  s << " (largest real part " << largest_real_part << " 1/s)";
+  return s.str();
+}
+
+SteadyStateStability steady_state_stability(const Model& model, double V, const Eigen::VectorXd& x,
+                                            double max_frequency_hz) {
+  std::vector<int> states;
+  for (int k = 0; k < model.state_size(); ++k)
+    if (!is_spin_angle(model, k)) states.push_back(k);
+  const RhsJacobianPlan plan = plan_rhs_jacobian(model, states, states);
+  const Eigen::EigenSolver<Eigen::MatrixXd> eigen(rhs_jacobian_ad(model, plan, V, 0.0, x), false);
+  SteadyStateStability out;
+  out.largest_real_part = -INFINITY;
+  const double omega_max = 2.0 * M_PI * max_frequency_hz;
+  for (const std::complex<double>& l : eigen.eigenvalues()) {
+    if (std::abs(l.imag()) > omega_max) continue;
+    out.largest_real_part = std::max(out.largest_real_part, l.real());
+    if (l.real() <= 1e-6) continue;
+    if (std::abs(l.imag()) < 1e-9 * std::max(1.0, std::abs(l.real())))
+      ++out.divergent;
+    else if (l.imag() > 0.0)
+      ++out.oscillatory;  // one of each conjugate pair
+  }
+  return out;
 }
 
 namespace {
@@ -398,6 +434,7 @@ CurvingPoint curving_point(const Model& scene_model, const SteadyCurvingState& s
   const Eigen::VectorXd& x = s.equilibrium.state;
   CurvingPoint p;
   p.state = s;
+  p.stability = steady_state_stability(model, V, x);
   const double D = model.track.spec().rail_contact_distance_m, g = model.gravity_m_per_s2;
   const double sin_phi = std::clamp(s.condition.cant_m / D, -1.0, 1.0);
   // a_y = V^2 kappa cos(phi) - g sin(phi), along the track plane's y (left).
@@ -453,8 +490,30 @@ CurvingSweep sweep_steady_curving(const Model& scene_model, CurvingSweepKind kin
   for (double value : values) {
     const CurvingCondition c = condition(value);
     try {
-      const SteadyCurvingState s = solve_steady_curving(scene_model, c, previous, options);
-      sweep.points.push_back(curving_point(scene_model, s, prudhomme_factor));
+      SteadyCurvingState s = solve_steady_curving(scene_model, c, previous, options);
+      CurvingPoint p = curving_point(scene_model, s, prudhomme_factor);
+      if (!p.stability.stable()) {
+        // The continued state is on a branch the vehicle does not stay on:
+        // the vehicle's own motion from the nominal position (pseudo-
+        // transient continuation, then Newton) may settle on a stable one.
+        const Model arc = uniform_arc_model(scene_model, c.curvature_per_m, c.cant_m);
+        try {
+          EquilibriumOptions eo;
+          eo.acceleration_tolerance = options.acceleration_tolerance;
+          SteadyCurvingState settled = s;
+          settled.equilibrium =
+              solve_equilibrium(arc, c.speed_m_per_s, lowered_nominal_state(arc, c.speed_m_per_s), eo);
+          settled.method = "pseudo-transient continuation from the nominal position (the state "
+                           "continued from the previous point is " + p.stability.describe() + ")";
+          CurvingPoint q = curving_point(scene_model, settled, prudhomme_factor);
+          if (q.stability.stable() && physical_limit(arc, c.speed_m_per_s, settled.equilibrium.state).empty()) {
+            s = std::move(settled);
+            p = std::move(q);
+          }
+        } catch (const EquilibriumError&) {
+        }
+      }
+      sweep.points.push_back(std::move(p));
       previous = s;
     } catch (const CurvingError& e) {
       if (!e.physical) throw;

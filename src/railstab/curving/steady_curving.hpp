@@ -85,6 +85,25 @@ inline constexpr double kClimbingLift_m = 1e-3;
 // (Y 61.2 kN, Q 69.6 kN, lift 0.4 mm, lateral shift -7.1 mm): flange climbing".
 std::string physical_limit(const Model& model, double speed_m_per_s, const Eigen::VectorXd& x);
 
+// Whether the vehicle stays in a steady state: the eigenvalues of the
+// state derivative's Jacobian (every state but the cyclic spin angles) at
+// it. A real eigenvalue > 0 is a divergence (the middle branch between two
+// folds: a small disturbance runs away from it); a complex pair with a
+// positive real part below max_frequency_hz is an oscillation growing from
+// it (hunting). Faster modes (wheel-rail contact modes, ~160 Hz, see
+// docs/model.md section 13) do not decide, as in the critical-speed search.
+struct SteadyStateStability {
+  int divergent = 0;             // real eigenvalues > 1e-6 1/s
+  int oscillatory = 0;           // complex pairs, Re > 1e-6 1/s, below max_frequency_hz
+  double largest_real_part = 0;  // of the eigenvalues below max_frequency_hz (1/s)
+  bool stable() const { return divergent == 0 && oscillatory == 0; }
+  // "stable" or "unstable: 4 divergent modes (largest real part 61.8 1/s)"
+  std::string describe() const;
+};
+SteadyStateStability steady_state_stability(const Model& model, double speed_m_per_s,
+                                            const Eigen::VectorXd& x,
+                                            double max_frequency_hz = 20.0);
+
 // A steady curving state.
 struct SteadyCurvingState {
   CurvingCondition condition;
@@ -149,6 +168,7 @@ struct CurvingWheelset {
 };
 struct CurvingPoint {
   SteadyCurvingState state;
+  SteadyStateStability stability;
   double lateral_acceleration_m_per_s2 = 0.0;  // a_y in the track plane
   std::vector<CurvingWheelset> wheelsets;
   // Sum over the wheels of the rails' lateral force on them along each
@@ -161,7 +181,12 @@ CurvingPoint curving_point(const Model& scene_model, const SteadyCurvingState& s
                            double prudhomme_factor);
 
 // A sweep over cant deficiency at one radius, or over radius at one cant
-// deficiency, each point continued from the previous one.
+// deficiency, each point continued from the previous one. Where the state
+// continued to is unstable (the branch between two folds), the stable
+// steady state the pseudo-transient continuation settles on from the
+// nominal position (model.md section 8) replaces it if there is one; the
+// sweep goes on from the point kept. An unstable point is kept, and said,
+// where no stable one is found.
 struct CurvingSweep {
   std::vector<CurvingPoint> points;
   // Where the sweep stopped before its end because the vehicle has no steady

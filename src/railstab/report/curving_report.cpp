@@ -56,7 +56,8 @@ std::string write_curving_results(const Model& model, const CurvingSweep& sweep,
   const double D = model.track.spec().rail_contact_distance_m, g = model.gravity_m_per_s2;
   outputs.write(stem + "_curving.csv", [&](std::ostream& out) {
     out << std::setprecision(10)
-        << "cant_deficiency_m,speed_m_per_s,radius_m,cant_m,lateral_acceleration_m_per_s2";
+        << "cant_deficiency_m,speed_m_per_s,radius_m,cant_m,lateral_acceleration_m_per_s2,stable,"
+           "divergent_modes,growing_oscillations,largest_real_part_per_s";
     if (!sweep.points.empty())
       for (const CurvingWheelset& w : sweep.points.front().wheelsets) {
         const std::string n = model.bodies[size_t(w.body)].name;
@@ -71,7 +72,9 @@ std::string write_curving_results(const Model& model, const CurvingSweep& sweep,
     for (const CurvingPoint& p : sweep.points) {
       const CurvingCondition& c = p.state.condition;
       out << p.state.cant_deficiency_m << ',' << c.speed_m_per_s << ',' << radius_of(c) << ','
-          << c.cant_m << ',' << p.lateral_acceleration_m_per_s2;
+          << c.cant_m << ',' << p.lateral_acceleration_m_per_s2 << ','
+          << (p.stability.stable() ? 1 : 0) << ',' << p.stability.divergent << ','
+          << p.stability.oscillatory << ',' << p.stability.largest_real_part;
       for (const CurvingWheelset& w : p.wheelsets) {
         out << ',' << w.lateral_shift_m << ',' << w.angle_of_attack_rad << ',' << w.roll_rad << ','
             << w.sum_y_N << ',' << w.prudhomme_limit_N;
@@ -98,7 +101,16 @@ std::string write_curving_results(const Model& model, const CurvingSweep& sweep,
           .field("lateral_acceleration_m_per_s2", p.lateral_acceleration_m_per_s2)
           .field("rail_lateral_force_N", p.rail_lateral_force_N)
           .field("mass_times_lateral_acceleration_N", p.mass_times_lateral_acceleration_N)
-          .field("method", p.state.method)
+          .field("method", p.state.method);
+      j.key("stability")
+          .begin_object()
+          .field("stable", p.stability.stable())
+          .field("divergent_modes", p.stability.divergent)
+          .field("growing_oscillations", p.stability.oscillatory)
+          .field("largest_real_part_per_s", p.stability.largest_real_part)
+          .field("statement", p.stability.describe())
+          .end_object();
+      j
           .field("max_acceleration_residual", p.state.equilibrium.max_acceleration);
       j.key("wheelsets").begin_array();
       for (const CurvingWheelset& w : p.wheelsets) {
@@ -135,6 +147,7 @@ std::string write_curving_results(const Model& model, const CurvingSweep& sweep,
   s << std::fixed;
   s << "steady curving of " << model.name << ": " << sweep.points.size() << " steady state(s)\n";
   s << "  h_d [mm]  V [m/s]   R [m]   a_y [m/s2]  max Y/Q (Nadal)           max |Sum Y| / Prud'homme  on the flange\n";
+  int unstable = 0;
   for (const CurvingPoint& p : sweep.points) {
     const CurvingCondition& c = p.state.condition;
     double worst_yq = -INFINITY, worst_nadal = NAN, worst_sumy = 0.0;
@@ -156,8 +169,13 @@ std::string write_curving_results(const Model& model, const CurvingSweep& sweep,
       << radius_of(c) << std::setw(12) << std::setprecision(3) << p.lateral_acceleration_m_per_s2
       << "  " << std::setprecision(3) << worst_yq << " (" << worst_nadal << ") " << std::left
       << std::setw(22) << worst_wheel << std::right << std::setw(6) << std::setprecision(3)
-      << worst_sumy << "                  " << (flanges.empty() ? "-" : flanges) << "\n";
+      << worst_sumy << "                  " << (flanges.empty() ? "-" : flanges)
+      << (p.stability.stable() ? "" : "  [" + p.stability.describe() + "]") << "\n";
+    if (!p.stability.stable()) ++unstable;
   }
+  if (unstable > 0)
+    s << unstable << " of these steady states are unstable (no stable one was found there: the "
+      << "vehicle does not stay in them; docs/steady_curving.md)\n";
   if (!sweep.physical_limit.empty()) s << sweep.physical_limit << "\n";
   return s.str();
 }
