@@ -2,6 +2,7 @@
 
 #include <railstab/core/coordinates.hpp>
 #include <railstab/equilibrium/speed_continuation.hpp>
+#include <railstab/contact/model_contact.hpp>
 #include <railstab/integrate/root_functions.hpp>
 #include <railstab/linear/jacobian.hpp>
 
@@ -110,6 +111,27 @@ std::string physical_limit(const Model& model, double V, const Eigen::VectorXd& 
       s << ": flange climbing";
       return s.str();
     }
+  // A flangeless contact (cone, linear conicity) past its flange clearance:
+  // the model has no flange there, so no steady state of it is one of the
+  // vehicle (the time domain stops there too).
+  {
+    Eigen::MatrixXd q6, qd6;
+    model.full_coordinates(0.0, V, x, q6, qd6);
+    for (size_t b = 0; b < model.bodies.size(); ++b) {
+      const WheelsetKind* w = model.bodies[b].wheelset();
+      if (!w) continue;
+      const ContactSpec& spec = model.contacts[size_t(w->contact)].spec;
+      if (uses_contact_table(spec.geometry)) continue;
+      const double shift = q6(int(CoordinateIndex::y), int(b)) - model.bodies[b].nominal_q(int(CoordinateIndex::y));
+      const double clearance = lateral_validity_limit_m(spec);
+      if (std::abs(shift) > clearance) {
+        s << model.bodies[b].name << " is " << shift * 1e3 << " mm off centre, beyond the flange clearance "
+          << clearance * 1e3 << " mm of its flangeless contact '" << spec.name
+          << "': flange contact is outside the model's validity";
+        return s.str();
+      }
+    }
+  }
   // The table: a wheel lifted (climbing) or at the edge of its table.
   for (int i = 0; i < roots.size(); ++i) {
     if (roots[i].kind != RootFunction::Kind::table_edge) continue;
@@ -167,6 +189,15 @@ SteadyStateStability steady_state_stability(const Model& model, double V, const 
 }
 
 namespace {
+
+// "no steady state physically", or, where the limit is the model's own (a
+// flangeless contact past its clearance), "no steady state within the
+// model's validity".
+std::string no_steady_state(const std::string& reason) {
+  return reason.find("outside the model's validity") != std::string::npos
+             ? "no steady state within the model's validity"
+             : "no steady state physically";
+}
 
 // A path between two curving conditions on uniform arcs: speed, curvature
 // and cant linear in lambda. The model is rebuilt per lambda (only its
@@ -274,7 +305,7 @@ PathOutcome follow(SteadyStatePath& path, const Eigen::VectorXd& start_state, Co
   if (!r.stop_reason.empty()) {
     out.last = state_at(r.last_lambda, r.last_state, eq);
     out.physical = true;
-    out.why = "no steady state physically at " + to_text + ": followed from " + from_text +
+    out.why = no_steady_state(r.stop_reason) + " at " + to_text + ": followed from " + from_text +
               ", the steady state reaches the limit at " + path.describe(r.last_lambda) + ": " +
               r.stop_reason;
   } else {
@@ -306,7 +337,7 @@ SteadyCurvingState solve_steady_curving(const Model& scene_model, const CurvingC
     // A steady state past the physical limit is none.
     const std::string limit = physical_limit(target_model, V, s.equilibrium.state);
     if (!limit.empty())
-      throw CurvingError("no steady state physically at " + target_text + ": " + limit, true, s);
+      throw CurvingError(no_steady_state(limit) + " at " + target_text + ": " + limit, true, s);
     return s;
   };
 
@@ -414,7 +445,7 @@ SteadyCurvingState continue_scene_steady_state(const Model& model, double from_s
     }
     const std::string limit = physical_limit(model, next, s.equilibrium.state);
     if (!limit.empty())
-      throw CurvingError("no steady state physically at " +
+      throw CurvingError(no_steady_state(limit) + " at " +
                              describe_condition(condition_at_reference(model, V), D, g) +
                              ": followed up in speed, the steady state reaches the limit at " +
                              describe_condition(c, D, g) + ": " + limit,

@@ -77,12 +77,14 @@ inline constexpr double kClimbingLift_m = 1e-3;
 
 // Where the vehicle at (model, V, x) is at or beyond the limit of steady
 // curving: a wheel with Y/Q at or beyond Nadal's limit on its flange (a
-// loaded contact point beyond kFlangeContactAngle_rad), a
-// wheel lifted by more than kClimbingLift_m above a centred wheel's height,
-// or a wheel at the edge of its contact table (kTableEdgeFraction of a half
-// range). Empty where none is; otherwise the statement with the wheel's
-// forces, e.g. "wheelset1 right wheel Y/Q 0.88 reaches Nadal's limit 0.88
-// (Y 61.2 kN, Q 69.6 kN, lift 0.4 mm, lateral shift -7.1 mm): flange climbing".
+// loaded contact point beyond kFlangeContactAngle_rad), a wheel lifted by
+// more than kClimbingLift_m above a centred wheel's height, or a wheel at
+// the edge of its contact table (kTableEdgeFraction of a half range); on a
+// flangeless contact (cone, linear conicity) a wheelset past its flange
+// clearance (the model's validity limit: no flange is modelled). Empty where
+// none is; otherwise the statement with the wheel's forces, e.g.
+// "wheelset1 right wheel Y/Q 0.88 reaches Nadal's limit 0.88 (Y 61.2 kN,
+// Q 69.6 kN, lift 0.4 mm, lateral shift -7.1 mm): flange climbing".
 std::string physical_limit(const Model& model, double speed_m_per_s, const Eigen::VectorXd& x);
 
 // Whether the vehicle stays in a steady state: the eigenvalues of the

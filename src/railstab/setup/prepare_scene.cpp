@@ -132,7 +132,7 @@ EquilibriumResult steady_state_by_speed_ramp(const Model& model, double V,
       // The state said with the error is the last converged one.
       const Eigen::VectorXd last =
           c.last_converged ? c.last_converged->equilibrium.state : direct.last_state;
-      throw EquilibriumError(c.physical ? std::string(c.what()) : ramp + "; " + c.what(), last, "");
+      throw EquilibriumError(ramp + "; " + c.what(), last, "");
     }
   }
   return eq;
