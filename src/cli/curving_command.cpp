@@ -35,10 +35,9 @@ struct Quantity {
 constexpr Quantity kCantDeficiency{"--cant-deficiency", -0.5, 0.5, "in [-0.5, 0.5] m"};
 constexpr Quantity kRadius{"--radius", 10.0, 1e6, "in [10, 1e6] m"};
 
-// VALUE or FROM:TO:STEP: the values FROM, FROM + STEP, ... up to TO (within
-// STEP / 1000); FROM may lie above TO with a negative STEP? No: STEP > 0 and
-// the values run from FROM towards TO, down when TO < FROM (a radius sweep
-// from wide to tight curves).
+// VALUE or FROM:TO:STEP: the values FROM, FROM +- STEP, ... up to TO (within
+// STEP / 1000). STEP > 0; the values run from FROM towards TO, downwards
+// when TO < FROM (a radius sweep from wide to tight curves).
 std::vector<double> parse_values(const std::string& text, const Quantity& q) {
   auto fail = [&](const std::string& why) {
     throw std::invalid_argument(std::string(q.flag) + ": expected a value or FROM:TO:STEP in metres, each " +
