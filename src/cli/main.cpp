@@ -4,6 +4,7 @@
 #include "cli/bifurcation_command.hpp"
 #include "cli/check_command.hpp"
 #include "cli/contact_geometry_command.hpp"
+#include "cli/curving_command.hpp"
 #include "cli/modes_command.hpp"
 #include "cli/sensitivity_command.hpp"
 #include "cli/simulate_command.hpp"
@@ -31,6 +32,7 @@ int main(int argc, char** argv) {
   railstab::register_work_precision_command(app);
   railstab::register_contact_geometry_command(app);
   railstab::register_check_command(app);
+  railstab::register_curving_command(app);
   railstab::register_bifurcation_command(app);
   railstab::register_track_command(app);
   railstab::register_assess_command(app);

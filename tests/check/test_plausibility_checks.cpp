@@ -386,6 +386,7 @@ TEST(PlausibilityRanges, SpeedBelowTheCreepLawsValidityIsRejected) {
 TEST(PlausibilityShippedCases, NoNewWarningOnAnyShippedCase) {
   const std::vector<std::pair<std::string, std::vector<std::string>>> cases = {
       {"coach_curve", {}},
+      {"coach_s1002_curve", {}},
       {"coach_tangent", {}},
       {"extreme_cant_deficiency", {}},
       {"extreme_cant_excess", {}},

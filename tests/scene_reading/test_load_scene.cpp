@@ -413,6 +413,7 @@ TEST(SceneLoader, EveryCaseFileLoadsWithTheExpectedBodyCount) {
       {"extreme_zero_damping.toml", 3},   {"extreme_lift_off.toml", 3},
       {"extreme_near_critical.toml", 3},  {"extreme_conservative.toml", 3},
       {"coach_tangent.toml", 7},          {"coach_curve.toml", 7},
+      {"coach_s1002_curve.toml", 7},
       {"thesis_vehicle_s1002_tangent.toml", 7}, {"thesis_bogie_s1002_tangent.toml", 3},
       {"thesis_vehicle_s1002_curve.toml", 7},   {"thesis_bogie_s1002_curve.toml", 3},
       {"thesis_train_4.toml", 28}};  // 4 cars of 7 bodies

@@ -1,6 +1,7 @@
 #include <railstab/report/equilibrium_report.hpp>
 #include <railstab/io/file_names.hpp>
 
+#include <railstab/curving/steady_curving.hpp>
 #include <railstab/model/wheel_forces.hpp>
 #include <railstab/ride/wheelset_forces.hpp>
 
@@ -153,6 +154,20 @@ std::string write_equilibrium_results(const PreparedScene& s, OutputSet& outputs
       j.end_array().end_object();
     }
     j.end_array();
+    // Whether the vehicle stays in this state (curving/steady_curving.hpp):
+    // between two folds of a branch on real profiles the continuation can
+    // only reach unstable ones.
+    const SteadyStateStability stability = steady_state_stability(model, s.speed_m_per_s, s.equilibrium.state);
+    j.key("stability")
+        .begin_object()
+        .field("stable", stability.stable())
+        .field("divergent_modes", stability.divergent)
+        .field("growing_oscillations", stability.oscillatory)
+        .field("largest_real_part_per_s", stability.largest_real_part)
+        .end_object();
+    if (!stability.stable())
+      shown << "warning: this steady state is " << stability.describe()
+            << " (modes below 20 Hz): the vehicle does not stay in it\n";
     if (const auto w = wheel_beyond_nadal_limit(wheels)) {
       j.field("warning", nadal_warning(model, *w));
       shown << "warning: " << nadal_warning(model, *w) << "\n";

@@ -1,6 +1,7 @@
 #include <railstab/setup/prepare_scene.hpp>
 
 #include <railstab/model/equations_of_motion.hpp>
+#include <railstab/curving/steady_curving.hpp>
 #include <railstab/equilibrium/speed_continuation.hpp>
 #include <railstab/scene_reading/load_scene.hpp>
 #include <railstab/scene_reading/scene_checker.hpp>
@@ -104,19 +105,35 @@ EquilibriumResult steady_state_by_speed_ramp(const Model& model, double V,
                                              const EquilibriumError& direct) {
   double v = kRampStartSpeed_m_per_s;
   EquilibriumResult eq;
+  bool started = false;
   try {
     eq = solve_equilibrium(model, v, lowered_nominal_state(model, v));
+    started = true;
     while (v < V) {
       const double next = std::min(V, v + kRampStep_m_per_s);
       eq = continue_equilibrium_in_speed(model, v, eq.state, next, EquilibriumOptions{});
       v = next;
     }
   } catch (const EquilibriumError& e) {
-    throw EquilibriumError(std::string(direct.what()) +
-                               "; following the steady state up in speed from " +
-                               number_text(kRampStartSpeed_m_per_s) + " m/s stopped at " +
-                               number_text(v) + " m/s: " + e.what(),
-                           direct.last_state, direct.worst_state);
+    const std::string ramp = std::string(direct.what()) +
+                             "; following the steady state up in speed from " +
+                             number_text(kRampStartSpeed_m_per_s) + " m/s stopped at " +
+                             number_text(v) + " m/s: " + e.what();
+    if (!started) throw EquilibriumError(ramp, direct.last_state, direct.worst_state);
+    // Natural continuation stops at a fold of the branch (a wheelset's
+    // contact moving onto its flange root): pseudo-arclength continuation
+    // in speed from the last converged point follows the branch around it
+    // (curving/steady_curving.hpp). Its error names the last converged
+    // point, or says that the vehicle has no steady state physically
+    // (flange climbing) beyond it.
+    try {
+      return continue_scene_steady_state(model, v, eq.state, V).equilibrium;
+    } catch (const CurvingError& c) {
+      // The state said with the error is the last converged one.
+      const Eigen::VectorXd last =
+          c.last_converged ? c.last_converged->equilibrium.state : direct.last_state;
+      throw EquilibriumError(ramp + "; " + c.what(), last, "");
+    }
   }
   return eq;
 }
