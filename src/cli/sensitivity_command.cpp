@@ -41,7 +41,7 @@ void run_sensitivity_command(const SensitivityArgs& a) {
             << sens.parameters.size() << " parameters\n";
   SensitivityReportContext c{s.spec.name, a.scene, mode.name, mode.frequency_hz, a.top};
   OutputSet outputs(a.out_dir);
-  write_sensitivity_results(sens, c, outputs, file_stem(s.spec.name), a.plots);
+  write_sensitivity_results(sens, c, outputs, scene_file_stem(a.scene), a.plots);
   const std::vector<std::string> written = outputs.commit();
   print_sensitivity_summary(std::cout, sens, c, 10);
   list_written(written, std::cout);
