@@ -1,5 +1,6 @@
 #include "cli/sensitivity_command.hpp"
 
+#include "cli/model_warnings.hpp"
 #include "cli/scene_command.hpp"
 #include "cli/numeric_flags.hpp"
 #include "cli/set_flag.hpp"
@@ -35,6 +36,7 @@ void run_sensitivity_command(const SensitivityArgs& a) {
   o.grid_step_m_per_s = a.step_m_per_s;
   o.hunting_band_hz = a.hunting_band_hz;
   const SensitivityRun run = run_sensitivity(s, o);
+  print_speed_range_warnings_to_stderr(s, run.search, o.to_m_per_s);
   const CriticalSpeedSensitivities& sens = run.sensitivities;
   const ModeReport& mode = run.mode;
   std::cerr << "critical speed " << run.search.critical_speed_m_per_s << " m/s; derivatives of "

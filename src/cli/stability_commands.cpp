@@ -1,5 +1,6 @@
 #include "cli/stability_commands.hpp"
 
+#include "cli/model_warnings.hpp"
 #include "cli/scene_command.hpp"
 #include <railstab/report/run_conditions.hpp>
 #include "cli/numeric_flags.hpp"
@@ -237,6 +238,7 @@ void run_critical_speed(const CommonArgs& a, CriticalSpeedOptions opt, const Qua
   std::cerr << "critical speed of " << s.model.name << " between " << opt.from_m_per_s
             << " and " << opt.to_m_per_s << " m/s (grid " << opt.grid_step_m_per_s << " m/s)\n";
   const CriticalSpeedResult r = find_critical_speed(s.model, s.equilibrium.state, s.speed_m_per_s, opt);
+  print_speed_range_warnings_to_stderr(s, r, opt.to_m_per_s);
   const std::string solver =
       r.grid.empty() ? a.solver : eigen_solver_name(r.grid.front().solver_used);
   // The Hopf point's criticality (first Lyapunov coefficient, kind), or why
