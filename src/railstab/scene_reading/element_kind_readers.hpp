@@ -1,10 +1,11 @@
 #pragma once
 // The readers of the element kinds of [[elements]] (and [[train.couplers]]),
-// all in one table: adding an element kind to scene files is adding its
-// entry to element_kind_readers() in element_kind_readers.cpp (its type
-// name, its own keys, and how it reads them). The keys every element takes
-// (name, type, body1, body2, points, mirror_lateral) are read by
-// elements_reader.cpp before the kind's reader is called.
+// one per kind of the variant ElementTpl, built from the kinds' readers in
+// element_readers/ (one file per kind: its own keys and how it reads them;
+// element_readers/element_reader.hpp). A kind without a reader does not
+// compile. The keys every element takes (name, type, body1, body2, points,
+// mirror_lateral) are read by elements_reader.cpp before the kind's reader
+// is called.
 #include <railstab/scene/scene_spec.hpp>
 #include <railstab/scene_reading/table_reader.hpp>
 
@@ -19,9 +20,12 @@ struct ElementKindReader {
   std::vector<std::string_view> keys;  // besides the keys every element takes
   bool points_required;                // point1_m and point2_m (else both 0)
   std::function<ElementSpec(const TableReader&, const ElementEnds&)> read;
+  // What mirror_lateral = true changes besides the points' y (empty: nothing).
+  std::function<void(ElementSpec&)> mirror_lateral;
 };
 
-// One per element kind, in the order their keys are offered in messages.
+// One per element kind, in the variant's order (the order their keys are
+// offered in messages).
 const std::vector<ElementKindReader>& element_kind_readers();
 
 }  // namespace railstab::scene_reading

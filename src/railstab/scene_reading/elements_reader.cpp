@@ -18,8 +18,10 @@ const std::vector<std::string_view> kCommonElementKeys = {"name",     "type",   
                                                           "mirror_lateral"};
 
 // mirror_lateral = true: "<name>_left" as given, "<name>_right" with the y of
-// both points (and of a bump stop's axis) negated.
-std::array<ElementSpec, 2> mirrored_pair(const ElementSpec& element) {
+// both points negated (and what the kind's reader mirrors, e.g. a bump
+// stop's axis).
+std::array<ElementSpec, 2> mirrored_pair(const ElementSpec& element,
+                                         const ElementKindReader& reader) {
   ElementSpec left = element;
   ElementSpec right = element;
   ends_of(left).name += "_left";
@@ -27,7 +29,7 @@ std::array<ElementSpec, 2> mirrored_pair(const ElementSpec& element) {
   r.name += "_right";
   r.point1_m.y() = -r.point1_m.y();
   r.point2_m.y() = -r.point2_m.y();
-  if (auto* stop = std::get_if<BumpStop<double>>(&right)) stop->axis.y() = -stop->axis.y();
+  if (reader.mirror_lateral) reader.mirror_lateral(right);
   return {left, right};
 }
 
@@ -69,7 +71,7 @@ ElementList read_element_tables(const TableReader& owner, std::string_view key) 
     ends.point2_m = ranged_each(element, "point2_m", physical_ranges::coordinate_m, no_point);
     const ElementSpec spec = reader.read(element, ends);
     if (element.flag_or("mirror_lateral", false)) {
-      for (const ElementSpec& half : mirrored_pair(spec)) {
+      for (const ElementSpec& half : mirrored_pair(spec, reader)) {
         list.specs.push_back(half);
         list.file_paths.push_back(element.key_path());
       }

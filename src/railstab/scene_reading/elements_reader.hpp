@@ -3,7 +3,7 @@
 // the track, body1 = "track"). Every element takes name, type, body1,
 // body2, point1_m, point2_m (in each body's frame) and mirror_lateral (a
 // "<name>_left" as given and a "<name>_right" mirrored in y); each type adds
-// its own keys (element_kind_readers.hpp) and rejects any other.
+// its own keys (element_readers/, one file per type) and rejects any other.
 #include <railstab/scene/scene_spec.hpp>
 #include <railstab/scene_reading/table_reader.hpp>
 

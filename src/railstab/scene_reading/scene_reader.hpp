@@ -8,7 +8,7 @@
 //   [track]             track_reader.hpp
 //   [contacts.<name>]   contacts_reader.hpp (creep_law_reader, profile_source_reader)
 //   [[bodies]]          bodies_reader.hpp
-//   [[elements]]        elements_reader.hpp (element_kind_readers: one per type)
+//   [[elements]]        elements_reader.hpp (element_readers/: one file per type)
 //   [simulation]        simulation_reader.hpp
 //   [train]             train_reader.hpp
 #include <railstab/scene/scene_spec.hpp>
