@@ -223,3 +223,45 @@ TEST(SceneSetValues, BadTomlValuesNameTheFlagTheKeyAndWhatWasExpected) {
     for (const std::string& s : c.said) EXPECT_NE(message.find(s), std::string::npos) << s << " in: " << message;
   }
 }
+
+// A table characteristic's scale factor (spring_force_scale,
+// damper_force_scale): read and set like any key, refused without a table
+// and outside (0, 100].
+TEST(SceneSetValues, TableScaleFactorsAreKeysOfTheirElements) {
+  const std::string coach = std::string(RAILSTAB_CASES_DIR) + "/coach_tangent.toml";
+  const std::string key = "elements.yaw_damper_bogie1.damper_force_scale";
+  EXPECT_EQ(parameter_value(load_scene_file(coach), key), 1.0);
+  const SceneSpec set = load_scene_file(coach, {{key, 2.5}});
+  // One scene entry, mirrored: both halves scaled.
+  EXPECT_EQ(parameter_value(set, "elements.yaw_damper_bogie1_left.damper_force_scale"), 2.5);
+  EXPECT_EQ(parameter_value(set, "elements.yaw_damper_bogie1_right.damper_force_scale"), 2.5);
+  EXPECT_EQ(parameter_value(set, "elements.yaw_damper_bogie2.damper_force_scale"), 1.0);
+  auto error = [&](const std::string& file, const SceneValueSetting& s) {
+    try {
+      load_scene_file(file, {s});
+    } catch (const SceneError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  const std::string zero = error(coach, {key, 0.0});
+  EXPECT_NE(zero.find("damper_force_scale: expected a scale factor in (0, 100]"), std::string::npos) << zero;
+  // A linear damper is varied by its coefficient: a scale beside it is
+  // refused, naming the key and the table it would need.
+  std::string text = read_regular_file(coach);
+  const std::string table = "damper_force_velocity_table = [[-0.3, -14800.0], [-0.02, -9000.0], [0.0, 0.0],\n"
+                            "                               [0.02, 9000.0], [0.3, 14800.0]]";
+  ASSERT_NE(text.find(table), std::string::npos);
+  text.replace(text.find(table), table.size(), "damping_N_s_per_m = 4.5e5");
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("railstab_set_scale_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string linear_file = (dir / "linear.toml").string();
+  std::ofstream(linear_file) << text;
+  const std::string linear = error(linear_file, {key, 2.0});
+  EXPECT_NE(linear.find("damper_force_scale: expected a scale factor beside damper_force_velocity_table"),
+            std::string::npos)
+      << linear;
+  EXPECT_NE(linear.find("varied by damping_N_s_per_m"), std::string::npos) << linear;
+  std::filesystem::remove_all(dir);
+}
