@@ -219,7 +219,9 @@ class SettingWriter {
     // to it when the rest of the path has none of its own (an optional key
     // or section at its default); the reader decides whether the scene may
     // have them. An index asks for an array that is not there: refused.
-    if (node.is_table() && plain_keys_from(at)) {
+    // Not a new entry of a named collection ([contacts.<name>]): a name
+    // that is not there is a typo, refused below with the names there are.
+    if (node.is_table() && plain_keys_from(at) && where != "contacts") {
       toml::table* table = node.as_table();
       for (size_t i = at; i + 1 < parts_.size(); ++i)
         table = table->insert_or_assign(parts_[i], toml::table{}).first->second.as_table();

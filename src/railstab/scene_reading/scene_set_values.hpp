@@ -25,8 +25,9 @@
 // index (`bodies.wheelset1.initial_offset.y_m=0.001` on a body without
 // `initial_offset`, `assessment.y_over_q_limit=0.9` on a scene without
 // `[assessment]`): an optional section at its default is an empty one. An
-// entry of [[bodies]], [[elements]] or [[track.segments]] is never created:
-// a name that is not there is refused with the names that are.
+// entry of [[bodies]], [[elements]], [[track.segments]] or [contacts.<name>]
+// is never created: a name that is not there is refused with the names that
+// are.
 #include <railstab/scene/scene_spec.hpp>
 #include <railstab/scene_reading/scene_error.hpp>
 
