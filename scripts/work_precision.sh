@@ -11,4 +11,6 @@ out=out/work_precision
   --integrators cvode_bdf,cvode_bdf_q2,cvode_adams,arkode_erk,arkode_dirk,arkode_dirk_q3,arkode_imex \
   --rtols 1e-2,3e-3,1e-3,3e-4,1e-4,1e-5,1e-6
 mkdir -p plots
-cp $out/thesis_vehicle_tangent_work_precision.png $out/thesis_vehicle_tangent_work_precision.md plots/
+# (the files carry the speed; the README shows them under the old names)
+cp $out/thesis_vehicle_tangent_20mps_work_precision.png plots/thesis_vehicle_tangent_work_precision.png
+cp $out/thesis_vehicle_tangent_20mps_work_precision.md plots/thesis_vehicle_tangent_work_precision.md

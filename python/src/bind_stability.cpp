@@ -158,7 +158,7 @@ py::dict critical_speed(const std::string& scene, const std::vector<std::string>
     // The quasi-linear report has no Hopf assessment (as the command's).
     if (!quasi_linear) hopf = assess_hopf(s->model, r);
     const std::string solver_used = r.grid.empty() ? solver : eigen_solver_name(r.grid.front().solver_used);
-    const std::string stem = steady_state_file_stem(s->model) + (quasi_linear ? "_quasi_linear" : "");
+    const std::string stem = steady_state_file_stem(scene, s->model) + (quasi_linear ? "_quasi_linear" : "");
     files = write_and_read([&](OutputSet& outputs) {
       write_stability_results(s->model, r, outputs, stem, solver_used, false, hunting_band,
                               quasi_linear ? nullptr : &hopf,
@@ -194,7 +194,7 @@ py::dict eigen(const std::string& scene, const std::vector<std::string>& setting
     p.emplace(stability.at(s->speed_m_per_s));
     files = write_and_read([&](OutputSet& outputs) {
       write_eigen_json(s->model, *p, full_mode_shapes(s->model, *p), outputs,
-                       steady_state_file_stem(s->model));
+                       steady_state_file_stem(scene, s->model));
     });
   }
   const std::size_t n = p->modes.size();
@@ -235,7 +235,7 @@ py::dict equilibrium(const std::string& scene, const std::vector<std::string>& s
     s.emplace(prepare_scene(scene, overrides));
     warnings = model_warnings(*s);
     files = write_and_read([&](OutputSet& outputs) {
-      write_equilibrium_results(*s, outputs, steady_state_file_stem(s->model));
+      write_equilibrium_results(*s, outputs, steady_state_file_stem(scene, s->model));
     });
   }
   py::dict out;
@@ -267,7 +267,7 @@ py::dict sensitivity(const std::string& scene, const std::vector<std::string>& s
     // unused without plots).
     SensitivityReportContext c{s.spec.name, scene, run->mode.name, run->mode.frequency_hz, 20};
     files = write_and_read([&](OutputSet& outputs) {
-      write_sensitivity_results(run->sensitivities, c, outputs, file_stem(s.spec.name), false);
+      write_sensitivity_results(run->sensitivities, c, outputs, scene_file_stem(scene), false);
     });
   }
   relay.rethrow();

@@ -155,7 +155,7 @@ py::dict study(const std::string& scene, const std::vector<std::string>& setting
     options.progress = relay.lines();
     const std::vector<StudyPoint> points = run_study(d, options);
     files = write_and_read([&](OutputSet& outputs) {
-      write_study_results(d, StudyShard{}, points, outputs, file_stem(d.scene_name), false);
+      write_study_results(d, StudyShard{}, points, outputs, scene_file_stem(d.scene_path), false);
     });
   }
   relay.rethrow();
@@ -209,7 +209,7 @@ py::dict bifurcation(const std::string& scene, const std::vector<std::string>& s
     info.hunting_band_hz = hunting_band;
     info.cycle_speed_m_per_s = o.cycle_speed_m_per_s;
     files = write_and_read([&](OutputSet& outputs) {
-      write_bifurcation_results(s.model, r, info, outputs, steady_state_file_stem(s.model), false);
+      write_bifurcation_results(s.model, r, info, outputs, steady_state_file_stem(scene, s.model), false);
     });
   }
   relay.rethrow();

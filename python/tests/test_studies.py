@@ -80,7 +80,7 @@ def test_bifurcation_equals_the_command(cli):
 def test_check_equals_the_command(cli):
     r = railstab.check(BOGIE, speed=30.0)
     run = cli("check", BOGIE, "--speed", "30")
-    assert_same_report(r, run.json("_check.json"))
+    assert_same_report(r, run.json("_check_30mps.json"))
 
 
 def test_study_table_is_a_dataframe_where_pandas_is_installed():

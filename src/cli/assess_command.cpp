@@ -63,7 +63,7 @@ void run_assess(const AssessArgs& args) {
   run.output_interval_s = opt.output_interval_s;
   run.simulated_s = traj.times_s.back() - opt.t_start_s;
   OutputSet outputs(args.out_dir);
-  const std::string stem = file_stem(model.name) + "_" + speed_file_tag(scene.speed_m_per_s);
+  const std::string stem = scene_file_stem(args.scene) + "_" + speed_file_tag(scene.speed_m_per_s);
   const std::string shown =
       write_assessment_report(model, a, scene.spec.assessment, run, outputs, stem, args.plots);
   std::cout << shown;

@@ -52,7 +52,7 @@ void run_bifurcation(const BifurcationArgs& a) {
   info.hunting_band_hz = a.hunting_band_hz;
   info.cycle_speed_m_per_s = o.cycle_speed_m_per_s;
   OutputSet outputs(a.out_dir);
-  write_bifurcation_results(s.model, r, info, outputs, steady_state_file_stem(s.model), a.plots);
+  write_bifurcation_results(s.model, r, info, outputs, steady_state_file_stem(a.scene, s.model), a.plots);
   const std::vector<std::string> written = outputs.commit();
   print_bifurcation_summary(std::cout, s.model, r);
   list_written(written, std::cout);

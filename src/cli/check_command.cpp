@@ -7,6 +7,7 @@
 #include <railstab/io/file_names.hpp>
 #include <railstab/io/output_set.hpp>
 #include <railstab/report/model_check_report.hpp>
+#include <railstab/report/run_conditions.hpp>
 #include <railstab/setup/prepare_scene.hpp>
 
 #include <iostream>
@@ -27,7 +28,10 @@ void run_check(const CheckArgs& a) {
   ModelCheckOptions options;
   options.natural_frequencies = a.natural_frequencies;
   const ModelCheckReport r = check_scene(spec, options);
-  const std::string stem = file_stem(r.scene) + "_check";
+  // The scene file's stem, the arc length in a curve and the speed the
+  // equilibrium (axle loads, cant, wheel-load balance) was taken at.
+  const std::string stem = steady_state_file_stem(a.scene, assemble_model(spec)) + "_check_" +
+                           speed_file_tag(spec.speed_m_per_s);
   OutputSet outputs(a.out_dir);
   outputs.write(stem + ".md", [&](std::ostream& out) { write_model_check_markdown(out, r); });
   outputs.write(stem + ".json", [&](std::ostream& out) { write_model_check_json(out, r); });

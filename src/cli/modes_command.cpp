@@ -56,7 +56,7 @@ void run_modes(const ModesArgs& a) {
   if (int(chosen.size()) > a.count) chosen.resize(size_t(a.count));
   OutputSet outputs(a.out_dir);
   write_mode_plots(s.model, p, full_mode_shapes(s.model, p), chosen, outputs,
-                   steady_state_file_stem(s.model));
+                   steady_state_file_stem(a.scene, s.model));
   std::cout << s.model.name << " at " << p.speed_m_per_s << " m/s, modes drawn:\n";
   for (int i : chosen) {
     const ModeReport& m = p.modes[size_t(i)];

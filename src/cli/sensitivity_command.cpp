@@ -1,5 +1,6 @@
 #include "cli/sensitivity_command.hpp"
 
+#include "cli/model_warnings.hpp"
 #include "cli/scene_command.hpp"
 #include "cli/numeric_flags.hpp"
 #include "cli/set_flag.hpp"
@@ -35,13 +36,14 @@ void run_sensitivity_command(const SensitivityArgs& a) {
   o.grid_step_m_per_s = a.step_m_per_s;
   o.hunting_band_hz = a.hunting_band_hz;
   const SensitivityRun run = run_sensitivity(s, o);
+  print_speed_range_warnings_to_stderr(s, run.search, o.to_m_per_s);
   const CriticalSpeedSensitivities& sens = run.sensitivities;
   const ModeReport& mode = run.mode;
   std::cerr << "critical speed " << run.search.critical_speed_m_per_s << " m/s; derivatives of "
             << sens.parameters.size() << " parameters\n";
   SensitivityReportContext c{s.spec.name, a.scene, mode.name, mode.frequency_hz, a.top};
   OutputSet outputs(a.out_dir);
-  write_sensitivity_results(sens, c, outputs, file_stem(s.spec.name), a.plots);
+  write_sensitivity_results(sens, c, outputs, scene_file_stem(a.scene), a.plots);
   const std::vector<std::string> written = outputs.commit();
   print_sensitivity_summary(std::cout, sens, c, 10);
   list_written(written, std::cout);

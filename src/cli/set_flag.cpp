@@ -22,9 +22,10 @@ void add_set_flag(CLI::App* cmd, std::vector<SceneValueSetting>& values) {
            values.clear();
            for (const std::string& text : texts) values.push_back(parse_scene_value_setting(text));
          },
-         "override a numeric scene value by its key path, e.g. --set "
-         "elements.yaw_damper.damping_N_s_per_m[0]=2.5e5 or --set bodies.carbody.mass_kg=32000 "
-         "(repeatable; as if the file said so)")
+         "override or add a scene value by its key path, e.g. --set "
+         "elements.yaw_damper.damping_N_s_per_m[0]=2.5e5, --set bodies.carbody.mass_kg=32000 or "
+         "--set 'bodies.wheelset1.initial_offset={y_m = 0.001}' (a number or a TOML value: "
+         "{...}, [...], \"...\", true/false; repeatable; as if the file said so)")
       ->type_name("KEY=VALUE")
       ->expected(1)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)

@@ -92,7 +92,7 @@ void run_simulate(const SimulateArgs& args) {
     x0 = perturbed_initial_state(scene);
   }
   if (ramp) {  // a ramp per rate instead of the run at one speed
-    run_speed_ramps(scene, x0, start, opt, args.ramp, args.out_dir);
+    run_speed_ramps(scene, args.scene, x0, start, opt, args.ramp, args.out_dir);
     return;
   }
   const Trajectory traj = integrate(model, scene.speed_m_per_s, x0, opt);
@@ -110,7 +110,7 @@ void run_simulate(const SimulateArgs& args) {
 
   // All files are staged and committed together (io/output_set.hpp): data
   // files, run summary, then the plots, which are views of the CSVs.
-  const std::string stem = file_stem(model.name) + "_" + speed_file_tag(scene.speed_m_per_s);
+  const std::string stem = scene_file_stem(args.scene) + "_" + speed_file_tag(scene.speed_m_per_s);
   // Wheel forces and accelerations at every output time (ride/ride_history.hpp),
   // computed once: the CSVs, the plots and the summary read them.
   const RideHistory ride =

@@ -29,7 +29,8 @@ void add_ramp_flags(CLI::App* cmd, RampFlags& ramp) {
       ->check(finite_in(flag_ranges::hunting_threshold_m));
 }
 
-void run_speed_ramps(const PreparedScene& scene, const Eigen::VectorXd& x0, const RunStart& start,
+void run_speed_ramps(const PreparedScene& scene, const std::string& scene_path,
+                     const Eigen::VectorXd& x0, const RunStart& start,
                      const IntegrationOptions& integration, const RampFlags& flags,
                      const std::string& out_dir) {
   const double V0 = scene.speed_m_per_s;
@@ -56,7 +57,7 @@ void run_speed_ramps(const PreparedScene& scene, const Eigen::VectorXd& x0, cons
     };
     ramps.push_back(run_speed_ramp(scene.model, x0, o));
   }
-  const std::string stem = file_stem(scene.model.name) + "_" + speed_file_tag(V0);
+  const std::string stem = scene_file_stem(scene_path) + "_" + speed_file_tag(V0);
   OutputSet outputs(out_dir);
   const std::string json = speed_ramp_json(scene.model, ramps, start);
   outputs.write(stem + "_ramp.json", [&](std::ostream& out) { out << json; });

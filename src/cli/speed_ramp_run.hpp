@@ -27,8 +27,10 @@ struct RampFlags {
 
 void add_ramp_flags(CLI::App* cmd, RampFlags& ramp);
 
-// Runs the ramps and writes their outputs into out_dir; prints the summary.
-void run_speed_ramps(const PreparedScene& scene, const Eigen::VectorXd& x0, const RunStart& start,
+// Runs the ramps and writes their outputs into out_dir, named after the
+// scene file (scene_path's stem) and the start speed; prints the summary.
+void run_speed_ramps(const PreparedScene& scene, const std::string& scene_path,
+                     const Eigen::VectorXd& x0, const RunStart& start,
                      const IntegrationOptions& integration, const RampFlags& ramp,
                      const std::string& out_dir);
 

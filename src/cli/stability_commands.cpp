@@ -1,5 +1,6 @@
 #include "cli/stability_commands.hpp"
 
+#include "cli/model_warnings.hpp"
 #include "cli/scene_command.hpp"
 #include <railstab/report/run_conditions.hpp>
 #include "cli/numeric_flags.hpp"
@@ -62,17 +63,17 @@ StabilityOptions stability_options(const CommonArgs& a) {
   return o;
 }
 
-// Output names start with the scene name made safe (io/file_names.hpp), so
-// a scene called "../evil" still writes inside --out, and a run in a curve
-// carries its arc length (report/run_conditions.hpp): it never overwrites
-// the tangent run's files.
-std::string stem_for(const Model& m) { return steady_state_file_stem(m); }
+// Output names start with the scene file's stem made safe
+// (io/file_names.hpp), so two copies of a scene keep their own outputs, and
+// a run in a curve carries its arc length (report/run_conditions.hpp): it
+// never overwrites the tangent run's files.
+std::string stem_for(const CommonArgs& a, const Model& m) { return steady_state_file_stem(a.scene, m); }
 
 // --- equilibrium ---------------------------------------------------------------
 void run_equilibrium(const CommonArgs& a) {
   const PreparedScene s = prepare_command_scene(a);
   OutputSet outputs(a.out_dir);
-  const std::string summary = write_equilibrium_results(s, outputs, stem_for(s.model));
+  const std::string summary = write_equilibrium_results(s, outputs, stem_for(a, s.model));
   std::cout << summary;
   list_written(outputs.commit(), std::cout);
 }
@@ -84,7 +85,7 @@ void run_eigen(const CommonArgs& a, double max_hz) {
   const StabilityPoint p = stability.at(s.speed_m_per_s);
   print_eigen_summary(std::cout, s.model, p, max_hz);
   OutputSet outputs(a.out_dir);
-  write_eigen_json(s.model, p, full_mode_shapes(s.model, p), outputs, stem_for(s.model));
+  write_eigen_json(s.model, p, full_mode_shapes(s.model, p), outputs, stem_for(a, s.model));
   list_written(outputs.commit(), std::cout);
 }
 
@@ -163,7 +164,7 @@ void run_quasi_linear_amplitude(const CommonArgs& a, const CriticalSpeedOptions&
   const std::string solver =
       r.result.grid.empty() ? a.solver : eigen_solver_name(r.result.grid.front().solver_used);
   OutputSet outputs(a.out_dir);
-  write_stability_results(s.model, r.result, outputs, stem_for(s.model) + "_quasi_linear", solver,
+  write_stability_results(s.model, r.result, outputs, stem_for(a, s.model) + "_quasi_linear", solver,
                           a.plots, opt.stability.max_frequency_hz, nullptr, &r);
   const std::vector<std::string> written = outputs.commit();
   std::cout << "quasi-linear contact at amplitude " << amplitude_m * 1e3 << " mm";
@@ -204,7 +205,7 @@ void run_quasi_linear_curve(const CommonArgs& a, const CriticalSpeedOptions& opt
       });
   OutputSet outputs(a.out_dir);
   write_quasi_linear_curve(s.model, curve, plain.critical_speed_found ? plain.critical_speed_m_per_s : 0.0,
-                           opt.from_m_per_s, opt.to_m_per_s, outputs, stem_for(s.model), a.plots);
+                           opt.from_m_per_s, opt.to_m_per_s, outputs, stem_for(a, s.model), a.plots);
   const std::vector<std::string> written = outputs.commit();
   std::cout << s.model.name << ": quasi-linear critical speed by amplitude (linear: ";
   if (plain.critical_speed_found) std::cout << plain.critical_speed_m_per_s << " m/s)\n";
@@ -237,13 +238,14 @@ void run_critical_speed(const CommonArgs& a, CriticalSpeedOptions opt, const Qua
   std::cerr << "critical speed of " << s.model.name << " between " << opt.from_m_per_s
             << " and " << opt.to_m_per_s << " m/s (grid " << opt.grid_step_m_per_s << " m/s)\n";
   const CriticalSpeedResult r = find_critical_speed(s.model, s.equilibrium.state, s.speed_m_per_s, opt);
+  print_speed_range_warnings_to_stderr(s, r, opt.to_m_per_s);
   const std::string solver =
       r.grid.empty() ? a.solver : eigen_solver_name(r.grid.front().solver_used);
   // The Hopf point's criticality (first Lyapunov coefficient, kind), or why
   // it is not computed (profile contact, no oscillatory crossing).
   const HopfAssessment hopf = assess_hopf(s.model, r);
   OutputSet outputs(a.out_dir);
-  write_stability_results(s.model, r, outputs, stem_for(s.model), solver, a.plots,
+  write_stability_results(s.model, r, outputs, stem_for(a, s.model), solver, a.plots,
                           opt.stability.max_frequency_hz, &hopf);
   const std::vector<std::string> written = outputs.commit();
   print_critical_speed_summary(std::cout, s.model, r, opt.stability.max_frequency_hz, &hopf);

@@ -71,7 +71,7 @@ void run_study_command(const StudyArgs& a) {
   const std::vector<StudyPoint> points = run_study(d, options);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   OutputSet outputs(a.out_dir);
-  write_study_results(d, a.shard, points, outputs, file_stem(d.scene_name), plots);
+  write_study_results(d, a.shard, points, outputs, scene_file_stem(d.scene_path), plots);
   const std::vector<std::string> written = outputs.commit();
   print_study_summary(std::cout, d, points);
   std::cout << points.size() << " critical-speed searches in " << seconds << " s wall\n";
@@ -111,7 +111,7 @@ void run_merge_command(const MergeArgs& a) {
   const std::vector<StudyPoint> points = merge_study_records(records);
   const StudyDefinition& d = records.front().definition;
   OutputSet outputs(a.out_dir);
-  write_study_results(d, StudyShard{}, points, outputs, file_stem(d.scene_name), a.plots);
+  write_study_results(d, StudyShard{}, points, outputs, scene_file_stem(d.scene_path), a.plots);
   const std::vector<std::string> written = outputs.commit();
   std::cout << "merged " << records.size() << " shard" << (records.size() == 1 ? "" : "s") << "\n";
   print_study_summary(std::cout, d, points);

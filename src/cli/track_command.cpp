@@ -34,7 +34,7 @@ void run_track(const TrackArgs& a) {
   const IrregularityCheck check = check_irregularities(irregularities);
   OutputSet outputs(a.out_dir);
   const std::string shown =
-      write_irregularity_report(irregularities, check, spec.name, outputs, file_stem(spec.name), a.plots);
+      write_irregularity_report(irregularities, check, spec.name, outputs, scene_file_stem(a.scene), a.plots);
   const std::vector<std::string> written = outputs.commit();
   std::cout << shown;
   for (const std::string& f : written)

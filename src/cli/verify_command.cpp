@@ -59,7 +59,7 @@ void run_verify(const VerifyArgs& a) {
   }
   const VerificationResult r = verify_least_stable_mode(s.model, s.speed_m_per_s, s.equilibrium.state, options);
   const std::string stem =
-      steady_state_file_stem(s.model) + "_verify_" + speed_file_tag(r.speed_m_per_s);
+      steady_state_file_stem(a.scene, s.model) + "_verify_" + speed_file_tag(r.speed_m_per_s);
   OutputSet outputs(a.out_dir);
   for (const std::string& name : verification_plot_file_names(stem)) outputs.replaces(name);
   auto json_writer = [&](std::ostream& out) { write_verification_json(out, s.model, r); };

@@ -48,7 +48,7 @@ void run_work_precision_command(const WorkPrecisionArgs& args) {
         std::cerr << "  " << line << "\n";
       });
 
-  const std::string stem = file_stem(model.name);
+  const std::string stem = scene_file_stem(args.scene) + "_" + speed_file_tag(speed_m_per_s);
   OutputSet outputs(args.out_dir);
   for (const std::string& name : work_precision_plot_file_names(stem)) outputs.replaces(name);
   outputs.write(stem + "_work_precision.csv",

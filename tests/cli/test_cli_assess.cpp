@@ -60,12 +60,12 @@ TEST(CliAssess, S1002VehicleOnIrregularTrackPassesBelowHuntingAndFailsInIt) {
   auto run = test::run_railstab(
       {"assess", "vehicle.toml", "--speed", "50", "--t-end", "4", "--out", "below", "--no-plots"}, dir);
   ASSERT_EQ(run.exit_code, 0) << run.output;
-  std::string json = test::read_text(dir / "below" / "thesis_vehicle_s1002_tangent_50mps_assessment.json");
+  std::string json = test::read_text(dir / "below" / "vehicle_50mps_assessment.json");
   EXPECT_EQ(test::json_value(json, "passed"), "true") << run.output;
   run = test::run_railstab(
       {"assess", "vehicle.toml", "--speed", "100", "--t-end", "4", "--out", "above", "--no-plots"}, dir);
   ASSERT_EQ(run.exit_code, 0) << run.output;
-  json = test::read_text(dir / "above" / "thesis_vehicle_s1002_tangent_100mps_assessment.json");
+  json = test::read_text(dir / "above" / "vehicle_100mps_assessment.json");
   EXPECT_EQ(test::json_value(json, "passed"), "false") << run.output;
   const double f0 = std::stod(test::json_value(json, "instability_frequency_Hz"));
   EXPECT_GT(f0, 4.0);

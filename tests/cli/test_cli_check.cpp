@@ -27,8 +27,8 @@ TEST(CliCheck, CleanSceneReportsQuantitiesWithoutWarnings) {
   EXPECT_NE(run.output.find("total mass 6020 kg"), std::string::npos) << run.output;
   EXPECT_NE(run.output.find("0 warning(s), 0 error(s)"), std::string::npos) << run.output;
   EXPECT_NE(run.output.find("lowest natural frequencies at rest"), std::string::npos) << run.output;
-  const std::string md = read_text(dir / "out/thesis_bogie_tangent_check.md");
-  const std::string json = read_text(dir / "out/thesis_bogie_tangent_check.json");
+  const std::string md = read_text(dir / "out/thesis_bogie_tangent_check_20mps.md");
+  const std::string json = read_text(dir / "out/thesis_bogie_tangent_check_20mps.json");
   EXPECT_NE(md.find("## Static deflections under the preloads"), std::string::npos) << md;
   EXPECT_NE(json.find("\"axle_loads\""), std::string::npos) << json;
   fs::remove_all(dir);
@@ -49,7 +49,7 @@ TEST(CliCheck, WarningsAtTheStartOfEveryCommand) {
   EXPECT_NE(check.output.find("warning: contacts.thesis_knife_edge.half_contact_distance_m"),
             std::string::npos)
       << check.output;
-  EXPECT_NE(read_text(dir / "out/thesis_bogie_tangent_check.json").find("contact_distance_mismatch"),
+  EXPECT_NE(read_text(dir / "out/gauge_check_20mps.json").find("contact_distance_mismatch"),
             std::string::npos);
 
   const auto eq = run_railstab({"equilibrium", "gauge.toml", "--out", "out"}, dir);

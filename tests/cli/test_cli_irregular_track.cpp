@@ -56,19 +56,19 @@ TEST(CliIrregularTrack, SimulateAndAssessRunOnTheIrregularities) {
   ASSERT_EQ(run.exit_code, 0) << run.output;
   run = test::run_railstab(args("simulate", "irregular.toml", "irregular"), dir);
   ASSERT_EQ(run.exit_code, 0) << run.output;
-  const std::string stem = "thesis_vehicle_tangent_40mps";
-  EXPECT_LT(largest_leading_lateral_m(dir / "perfect" / (stem + ".csv")), 1e-9);
+  // Outputs are named after each scene file (perfect.toml, irregular.toml).
+  EXPECT_LT(largest_leading_lateral_m(dir / "perfect" / (std::string("perfect_40mps") + ".csv")), 1e-9);
   // Half ERRI B176 low: 1 mm rms alignment; the wheelset follows a good part of it.
-  EXPECT_GT(largest_leading_lateral_m(dir / "irregular" / (stem + ".csv")), 0.5e-3);
-  EXPECT_EQ(test::json_value(test::read_text(dir / "perfect" / (stem + "_run.json")), "track_irregularities"), "null");
-  EXPECT_NE(test::read_text(dir / "irregular" / (stem + "_run.json"))
+  EXPECT_GT(largest_leading_lateral_m(dir / "irregular" / (std::string("irregular_40mps") + ".csv")), 0.5e-3);
+  EXPECT_EQ(test::json_value(test::read_text(dir / "perfect" / (std::string("perfect_40mps") + "_run.json")), "track_irregularities"), "null");
+  EXPECT_NE(test::read_text(dir / "irregular" / (std::string("irregular_40mps") + "_run.json"))
                 .find("\"track_irregularities\": \"erri_b176_low, seed 5, wavelengths 3-150 m, 600 m from s = 0 m, amplitude scale 0.5"),
             std::string::npos);
   std::vector<std::string> assess = args("assess", "irregular.toml", "assess");
   assess[4 + 3] = "4";  // --t-end 4: 160 m, room for the 100 m windows
   run = test::run_railstab(assess, dir);
   ASSERT_EQ(run.exit_code, 0) << run.output;
-  EXPECT_NE(test::read_text(dir / "assess" / (stem + "_assessment.md")).find("irregular track (erri_b176_low"),
+  EXPECT_NE(test::read_text(dir / "assess" / (std::string("irregular_40mps") + "_assessment.md")).find("irregular track (erri_b176_low"),
             std::string::npos);
   fs::remove_all(dir);
 }

@@ -206,3 +206,55 @@ TEST(CliOutputNames, EquilibriumAtTwoSpeedsKeepsBoth) {
   EXPECT_FALSE(fs::exists(dir / "out" / "textbook_wheelset_equilibrium.json"));
   fs::remove_all(dir);
 }
+
+// Every command names its files after the scene file, not the scene's
+// `name` (issue 24, item 4): two copies of one scene (same `name`, one
+// value changed) run into one folder keep their own outputs, and a command
+// run at one speed carries it (docs/outputs.md, "File names").
+TEST(CliOutputNames, EveryCommandNamesItsFilesAfterTheSceneFileAndItsSpeed) {
+  const fs::path dir = fs::temp_directory_path() / ("railstab_cli_stem_names_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string text = file_text(kWheelset);
+  ASSERT_NE(text.find("name = \"textbook_wheelset\""), std::string::npos);
+  std::ofstream(dir / "copy_a.toml") << text;
+  std::ofstream(dir / "copy_b.toml") << text;
+  struct Run {
+    std::vector<std::string> args;  // after the scene
+    std::vector<std::string> files;  // after the stem
+  };
+  const std::vector<Run> runs = {
+      {{"equilibrium", "--speed", "30"}, {"_equilibrium_30mps.json"}},
+      {{"eigen", "--speed", "30"}, {"_eigen_30mps.json"}},
+      {{"critical-speed", "--from", "5", "--to", "60", "--step", "5", "--no-plots"},
+       {"_critical_speed.json", "_eigenvalues.csv"}},
+      {{"check", "--speed", "30", "--no-frequencies"}, {"_check_30mps.json", "_check_30mps.md"}},
+      {{"simulate", "--speed", "30", "--t-end", "0.05", "--no-plots"}, {"_30mps.csv", "_30mps_run.json"}},
+      {{"verify", "--speed", "30", "--no-plots"}, {"_verify_30mps.json"}},
+      {{"work-precision", "--speed", "30", "--t-end", "0.05", "--integrators", "cvode_bdf",
+        "--rtols", "1e-3", "--no-plots"},
+       {"_30mps_work_precision.csv", "_30mps_work_precision.md"}},
+      {{"sensitivity", "--key", "contacts.textbook_linear.conicity", "--from", "5", "--to", "120",
+        "--step", "5", "--no-plots"},
+       {"_sensitivity.json"}},
+      {{"study", "--vary", "contacts.textbook_linear.conicity=0.1:0.2:0.1", "--from", "5", "--to",
+        "60", "--step", "5", "--no-plots"},
+       {"_study.csv", "_study.json"}},
+  };
+  for (const Run& r : runs) {
+    for (const std::string stem : {"copy_a", "copy_b"}) {
+      std::vector<std::string> args = {r.args[0], stem + ".toml"};
+      args.insert(args.end(), r.args.begin() + 1, r.args.end());
+      args.insert(args.end(), {"--out", "out"});
+      const auto run = railstab::test::run_railstab(args, dir, "", 300);
+      ASSERT_EQ(run.exit_code, 0) << r.args[0] << ": " << run.output;
+      for (const std::string& suffix : r.files)
+        EXPECT_TRUE(fs::is_regular_file(dir / "out" / (stem + suffix))) << r.args[0] << ": " << stem + suffix;
+    }
+  }
+  // Nothing is named after the scene's `name` any more.
+  for (const auto& entry : fs::directory_iterator(dir / "out"))
+    EXPECT_EQ(entry.path().filename().string().rfind("textbook_wheelset", 0), std::string::npos)
+        << entry.path();
+  fs::remove_all(dir);
+}

@@ -50,7 +50,7 @@ TEST(CliRide, SimulateWritesWheelForcesAndAccelerationsWithPlots) {
                                       dir);
   ASSERT_EQ(run.exit_code, 0) << run.output;
   const fs::path out = dir / "out";
-  const std::string stem = "thesis_vehicle_curve_20mps";
+  const std::string stem = "vehicle_20mps";  // the scene file's stem
   for (const std::string suffix : {"_wheel_forces.csv", "_accelerations.csv", "_sum_y.png", "_y_over_q.png",
                                    "_lateral_acceleration.png", "_vertical_acceleration.png",
                                    "_ride_plots.gp"})

@@ -30,11 +30,11 @@ TEST(CliTrack, WritesChannelsPsdsAndPlotsWithTheRmsOfTheTarget) {
   const auto run = test::run_railstab({"track", scene.string(), "--out", "out"}, dir);
   ASSERT_EQ(run.exit_code, 0) << run.output;
   const fs::path out = dir / "out";
-  for (const std::string f : {"thesis_vehicle_tangent_irregularities.csv", "thesis_vehicle_tangent_irregularity_psd.csv",
-                              "thesis_vehicle_tangent_irregularities.json", "thesis_vehicle_tangent_irregularities.png",
-                              "thesis_vehicle_tangent_irregularity_psd.png"})
+  for (const std::string f : {"irregular_irregularities.csv", "irregular_irregularity_psd.csv",
+                              "irregular_irregularities.json", "irregular_irregularities.png",
+                              "irregular_irregularity_psd.png"})
     EXPECT_TRUE(fs::is_regular_file(out / f)) << f;
-  const std::string json = test::read_text(out / "thesis_vehicle_tangent_irregularities.json");
+  const std::string json = test::read_text(out / "irregular_irregularities.json");
   // The first channel (alignment): one 2 km realisation within 30 % of the
   // target rms (the estimate's scatter: IrregularitySynthesis.*).
   const double rms = std::stod(test::json_value(json, "sample_rms_m"));
@@ -92,7 +92,7 @@ TEST(CliTrack, MeasuredFileWritesItsChannelsAndPsdWithoutATarget) {
   const fs::path scene = irregular_scene(dir, "file = \"recorded.csv\"\nsample_interval_m = 0.5\n");
   const auto run = test::run_railstab({"track", scene.string(), "--out", "out", "--no-plots"}, dir);
   ASSERT_EQ(run.exit_code, 0) << run.output;
-  const std::string json = test::read_text(dir / "out" / "thesis_vehicle_tangent_irregularities.json");
+  const std::string json = test::read_text(dir / "out" / "irregular_irregularities.json");
   EXPECT_EQ(test::json_value(json, "psd"), "null") << json;
   EXPECT_NE(json.find("recorded.csv"), std::string::npos);
   EXPECT_EQ(json.find("target_rms_m"), std::string::npos);

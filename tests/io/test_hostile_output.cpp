@@ -186,6 +186,14 @@ TEST(HostileFileNames, StemsAreSingleSafeComponentsOfBoundedLength) {
     EXPECT_NE(stem.front(), '.');
   }
   EXPECT_EQ(file_stem("../evil"), "_._evil");
+  // The outputs' stem: the scene file's name without folder and extension.
+  EXPECT_EQ(scene_file_stem("cases/coach_k6.toml"), "coach_k6");
+  EXPECT_EQ(scene_file_stem("../up/two.dots.toml"), "two.dots");
+  EXPECT_EQ(scene_file_stem("no_extension"), "no_extension");
+  EXPECT_EQ(scene_file_stem("dir/.toml"), "_toml");
+  EXPECT_EQ(scene_file_stem("dir/"), "unnamed");
+  EXPECT_EQ(scene_file_stem("a b;rm -rf.toml"), "a_b_rm_-rf");
+  for (const std::string& name : kHostileNames) EXPECT_TRUE(is_safe_file_name(scene_file_stem(name))) << name;
   EXPECT_EQ(file_stem("/etc/passwd"), "_etc_passwd");
   EXPECT_EQ(file_stem(""), "unnamed");
   EXPECT_EQ(file_stem("thesis_bogie-tangent.v2"), "thesis_bogie-tangent.v2");  // unchanged

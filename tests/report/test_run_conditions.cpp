@@ -59,11 +59,13 @@ TEST(RunConditions, CantDeficiencyAndTrackInTheArc) {
   EXPECT_NEAR(c.cant_deficiency_m(20.0), 400.0 * 1.5 / (9.81 * 1000.0) - 0.05, 1e-12);
   EXPECT_NEAR(c.cant_deficiency_m(20.0), 0.0111621, 1e-7);
   EXPECT_EQ(run_file_tag(c), "_arc2000m");
-  EXPECT_EQ(steady_state_file_stem(model), "thesis_bogie_curve_arc2000m");
+  // The stem is the scene file's (not the scene's name), with the arc length.
+  EXPECT_EQ(steady_state_file_stem("somewhere/copy.of.bogie.toml", model), "copy.of.bogie_arc2000m");
   const Model tangent = build_model(
       load_scene_file(std::string(RAILSTAB_CASES_DIR) + "/thesis_bogie_tangent.toml"));
   EXPECT_TRUE(run_conditions(tangent).tangent);
-  EXPECT_EQ(steady_state_file_stem(tangent), "thesis_bogie_tangent");
+  EXPECT_EQ(steady_state_file_stem("cases/thesis_bogie_tangent.toml", tangent), "thesis_bogie_tangent");
+  EXPECT_EQ(steady_state_file_stem("x/../evil name;.toml", tangent), "evil_name_");
   EXPECT_EQ(run_conditions(tangent).cant_deficiency_m(30.0), 0.0);
 }
 

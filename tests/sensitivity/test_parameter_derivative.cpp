@@ -176,3 +176,39 @@ TEST(ContactParameterDerivativeConicity, TextbookBogieAgreesWithCentralDifferenc
   ASSERT_EQ(scene.contacts.size(), 1u);
   check_against_central_differences(scene, "contacts." + scene.contacts[0].name + ".conicity");
 }
+
+// A table characteristic is a parameter through its scale factor (issue 24:
+// the coach's yaw dampers, force-velocity tables in series with their end
+// stiffness, had no parameter, so `sensitivity` left out the most influential
+// element). dA/da of the scale a against central differences of the whole
+// pipeline at a +- 1e-3 (A is linear in a through the damper's force; the
+// series element divides the tension by a): the same tolerance as above.
+TEST(TableScaleDerivative, CoachYawDamperScaleAgreesWithCentralDifferences) {
+  const SceneSpec coach = load_scene_file(std::string(RAILSTAB_CASES_DIR) + "/coach_tangent.toml");
+  const std::string key = "elements.yaw_damper_bogie1.damper_force_scale";
+  const std::vector<std::string> keys = parameter_keys(coach);
+  ASSERT_NE(std::find(keys.begin(), keys.end(), key), keys.end());
+  // The table elements have no damping key (the table is not a coefficient).
+  EXPECT_EQ(std::find(keys.begin(), keys.end(), "elements.yaw_damper_bogie1.damping_N_s_per_m"), keys.end());
+  EXPECT_EQ(parameter_value(coach, key), 1.0);
+  const StateMatrixDerivative d = state_matrix_derivative(coach, kSpeed, key);
+  const double h = 1e-3;
+  const Eigen::MatrixXd dA_fd =
+      (linear_model(with_parameter(coach, key, 1.0 + h)).A - linear_model(with_parameter(coach, key, 1.0 - h)).A) /
+      (2.0 * h);
+  const double scale = d.A_derivative.cwiseAbs().maxCoeff();
+  ASSERT_GT(scale, 0.0);
+  EXPECT_LT((d.A_derivative - dA_fd).cwiseAbs().maxCoeff(), 1e-5 * scale);
+  // The scale of 2 is the table with every force doubled (PCHIP slopes are
+  // linear in the forces, so the interpolants agree to rounding).
+  SceneSpec doubled = coach;
+  for (ElementSpec& e : doubled.elements)
+    if (auto* s = std::get_if<SeriesSpringDamper<double>>(&e); s && ends_of(e).name.rfind("yaw_damper_bogie1", 0) == 0) {
+      ForceCharacteristic<double> table = s->damper;
+      for (double& f : table.f) f *= 2.0;
+      s->set_damper(ForceCharacteristic<double>::table(table.x, table.f));
+    }
+  const Eigen::MatrixXd A_scaled = linear_model(with_parameter(coach, key, 2.0)).A;
+  const Eigen::MatrixXd A_doubled = linear_model(doubled).A;
+  EXPECT_LT((A_scaled - A_doubled).cwiseAbs().maxCoeff(), 1e-9 * A_doubled.cwiseAbs().maxCoeff());
+}

@@ -228,3 +228,31 @@ TEST(StudyRun, RecordWithAnUnknownEigenSolverIsRefused) {
         << e.what();
   }
 }
+
+// A table damper varied by its scale factor (issue 24: the coach's yaw
+// dampers are force-velocity tables and had no key a study could vary): the
+// front and rear dampers linked, each point the search of the scene with
+// the scale set, the scale 1 point the scene as shipped, and the scale
+// moving the critical speed (the dampers set the coach's hunting speed:
+// docs/parameter_studies.md, "The coach study").
+TEST(StudyRun, TableDamperScaleFactorIsAStudyKey) {
+  StudyDefinition d;
+  d.scene_path = std::string(RAILSTAB_CASES_DIR) + "/coach_tangent.toml";
+  d.scene_name = "coach_tangent";
+  d.scene_hash = "0";
+  d.varied = {parse_varied_key(
+      "elements.yaw_damper_bogie1.damper_force_scale,elements.yaw_damper_bogie2.damper_force_scale=0.5:1:0.5")};
+  d.analysis.from_m_per_s = 100.0;
+  d.analysis.to_m_per_s = 300.0;
+  d.analysis.grid_step_m_per_s = 10.0;
+  const std::vector<StudyPoint> points = run_study(d, {});
+  ASSERT_EQ(points.size(), 2u);
+  for (const StudyPoint& p : points) {
+    ASSERT_EQ(p.status, "critical_speed_found") << p.message;
+    const CriticalSpeedResult r = search_with(d, {{"elements.yaw_damper_bogie1.damper_force_scale", p.values[0]},
+                                                  {"elements.yaw_damper_bogie2.damper_force_scale", p.values[0]}});
+    EXPECT_EQ(p.critical_speed_m_per_s, r.critical_speed_m_per_s);
+  }
+  EXPECT_EQ(points[1].critical_speed_m_per_s, search_with(d, {}).critical_speed_m_per_s);
+  EXPECT_GT(std::abs(points[0].critical_speed_m_per_s - points[1].critical_speed_m_per_s), 1.0);
+}

@@ -504,6 +504,61 @@ ModelCheckReport check_model(const SceneSpec& spec, const Model& model, double s
   return r;
 }
 
+std::vector<ModelWarning> check_speed_range(const Model& model,
+                                            const std::vector<SpeedSteadyState>& speeds,
+                                            const ModelCheckLimits& limits) {
+  struct Seen {
+    std::string kind, subject;
+    double first = 0.0, last = 0.0;
+    int count = 0;
+    std::string worst_message;
+  };
+  std::vector<Seen> seen;  // in the order first met
+  int checked = 0;
+  for (const SpeedSteadyState& p : speeds) {
+    ModelCheckReport r;
+    r.gravity_m_per_s2 = model.gravity_m_per_s2;
+    check_cant(model, p.speed_m_per_s, limits, r);
+    if (p.state) {
+      EquilibriumResult eq;
+      eq.state = *p.state;
+      axle_loads(model, p.speed_m_per_s, eq, limits, r);
+    }
+    ++checked;
+    for (const ModelWarning& w : r.warnings) {
+      // Speed-independent warnings (the cant's direction, the axle load's
+      // size) are check_model's at the run's speed.
+      if (w.kind != "cant_deficiency_beyond_limit" && w.kind != "cant_excess_beyond_limit" &&
+          w.kind != "wheel_loads_unbalanced" && w.kind != "lateral_shift_beyond_flange_clearance")
+        continue;
+      auto it = std::find_if(seen.begin(), seen.end(), [&](const Seen& x) {
+        return x.kind == w.kind && x.subject == w.subject;
+      });
+      if (it == seen.end()) {
+        seen.push_back({w.kind, w.subject, p.speed_m_per_s, p.speed_m_per_s, 0, w.message});
+        it = seen.end() - 1;
+      }
+      // Excess is worst at the lowest speed, the others at the highest.
+      const bool worse = w.kind == "cant_excess_beyond_limit" ? p.speed_m_per_s < it->first
+                                                              : p.speed_m_per_s > it->last;
+      if (worse) it->worst_message = w.message;
+      it->first = std::min(it->first, p.speed_m_per_s);
+      it->last = std::max(it->last, p.speed_m_per_s);
+      ++it->count;
+    }
+  }
+  std::vector<ModelWarning> out;
+  for (const Seen& x : seen) {
+    std::ostringstream msg;
+    msg << "in the speed range, at " << x.count << " of " << checked << " speeds checked";
+    if (x.first != x.last) msg << " (" << x.first << " to " << x.last << " m/s)";
+    else msg << " (" << x.first << " m/s)";
+    msg << "; the worst: " << x.worst_message;
+    out.push_back({x.kind, x.subject, msg.str()});
+  }
+  return out;
+}
+
 ModelCheckReport check_model_without_equilibrium(const SceneSpec& spec, const Model& model,
                                                  const std::string& error,
                                                  const ModelCheckOptions& options) {

@@ -186,6 +186,26 @@ ModelCheckReport check_model_without_equilibrium(const SceneSpec& spec, const Mo
                                                  const std::string& error,
                                                  const ModelCheckOptions& options = {});
 
+// A steady state of a sweep over speeds (a grid point of the critical-speed
+// search): the speed and the state at it.
+struct SpeedSteadyState {
+  double speed_m_per_s = 0.0;
+  const Eigen::VectorXd* state = nullptr;  // null: no steady state (only the cant is checked)
+};
+
+// The checks whose verdict depends on the speed, at every speed of a sweep
+// (issue 24: check_model evaluates them at one speed only): cant deficiency
+// and excess (at every speed given), the wheel-load balance and a flangeless
+// wheelset's steady shift beyond its flange clearance (at the speeds with a
+// steady state). One warning per kind and subject: the speeds where the limit
+// is exceeded (the first and last, and how many of the speeds checked) and
+// the message at the worst speed of the range for that check (the highest for
+// deficiency, load balance and shift, which grow with the speed in a curve;
+// the lowest for excess). Same kinds and subjects as check_model's.
+std::vector<ModelWarning> check_speed_range(const Model& model,
+                                            const std::vector<SpeedSteadyState>& speeds,
+                                            const ModelCheckLimits& limits = {});
+
 // A scene from scratch, as `railstab check` runs it: the model built
 // (build_model; its exceptions propagate: nothing to check without a model),
 // the equilibrium at the scene's speed solved; when that fails, the checks

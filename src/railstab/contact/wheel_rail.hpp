@@ -319,8 +319,9 @@ WheelContact<T> contact_point_forces(const ModelContactTpl<S>& contact, const Bo
   if (spec.tangential != TangentialForceKind::none || spec.normal_damping_N_s_per_m > 0.0) {
     const Mat3<T> R_IT = ws.R_TI.transpose();
     const Vec3<T> w = ws.q.template head<3>();
-    const Vec3<T> w_T = to_scalar<T>(ws.track->w_WT_T);
-    const Vec3<T> v_T = to_scalar<T>(ws.track->v_WT_T);
+    const TrackFrameKinematics* dV = ws.track_speed_derivative;  // null unless differentiated in V
+    const Vec3<T> w_T = seeded_vector<T>(ws.track->w_WT_T, dV ? &dV->w_WT_T : nullptr);
+    const Vec3<T> v_T = seeded_vector<T>(ws.track->v_WT_T, dV ? &dV->v_WT_T : nullptr);
     const Vec3<T> v_centre_I = R_IT * (v_T + w_T.cross(w) + ws.qd.template head<3>());
     v_slip_I = v_centre_I + ws.w_B_I.cross(g.point_I);
   }
@@ -348,7 +349,9 @@ WheelContact<T> contact_point_forces(const ModelContactTpl<S>& contact, const Bo
     return out;
 
   // Creepages.
-  const T V = T(speed_m_per_s);
+  // Seeded dV/dV = 1 when the model is differentiated in the speed (the
+  // body's track frame then carries its derivative).
+  const T V = ws.track_speed_derivative ? seeded_scalar<T>(speed_m_per_s, 1.0) : T(speed_m_per_s);
   out.creep_x = v_slip_I.dot(l_I) / V;
   out.creep_y = v_slip_I.dot(t_I) / V;
   out.creep_spin_per_m = spec.spin_creepage ? T(ws.w_B_I.dot(nu_I) / V) : T(0);

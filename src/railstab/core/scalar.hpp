@@ -61,6 +61,25 @@ template <class U> inline double value_of(const Dual<U>& x) { return value_of(x.
 template <class T> struct IsDual : std::false_type {};
 template <class U> struct IsDual<Dual<U>> : std::true_type {};
 
+// A value with a derivative along the Dual's direction (the speed, when the
+// model is differentiated in V): Dual<U>(v, d); plain and state-AD scalars
+// carry no such direction and keep the value.
+template <class T> inline T seeded_scalar(double value, double derivative) {
+  if constexpr (IsDual<T>::value) {
+    using U = decltype(T{}.v);
+    return T(U(value), U(derivative));
+  } else {
+    (void)derivative;
+    return T(value);
+  }
+}
+template <class T>
+inline Eigen::Matrix<T, 3, 1> seeded_vector(const Eigen::Vector3d& value, const Eigen::Vector3d* derivative) {
+  Eigen::Matrix<T, 3, 1> out;
+  for (int i = 0; i < 3; ++i) out(i) = seeded_scalar<T>(value(i), derivative ? (*derivative)(i) : 0.0);
+  return out;
+}
+
 // Convert a double into scalar T (an AD constant has zero derivatives).
 template <class T> inline T constant(double x) {
   if constexpr (std::is_same_v<T, double>) {

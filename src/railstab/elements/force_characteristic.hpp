@@ -3,7 +3,11 @@
 // against velocity (a damper), linear or from a table.
 //
 //   linear: F = c x                        (c: stiffness or damping)
-//   table:  points (x_i, F_i), x strictly increasing, at least 2 points.
+//   table:  F = a P(x), P through the points (x_i, F_i), x strictly
+//           increasing, at least 2 points; a the table's scale factor (the
+//           scene's `spring_force_scale` / `damper_force_scale`, default 1),
+//           the parameter that varies a table characteristic (sensitivity,
+//           study, --set) as c varies a linear one.
 //           Between the points a monotone C1 cubic (Fritsch-Carlson "PCHIP":
 //           Hermite cubics whose node slopes are the harmonic mean of the
 //           neighbouring secants, zero where they change sign), so the curve
@@ -30,6 +34,7 @@ namespace railstab {
 template <class S> struct ForceCharacteristic {
   bool is_table = false;
   S coefficient = S(0);      // linear: F = coefficient x
+  S scale = S(1);            // table: F = scale P(x)
   std::vector<double> x, f;  // table points
   std::vector<double> slope; // PCHIP node slopes (computed by set_table)
 
@@ -55,7 +60,8 @@ template <class S> struct ForceCharacteristic {
 
   // The inverse characteristic x(F) of a strictly increasing table (or a
   // non-zero linear coefficient), used where a damper's velocity must be
-  // explicit in its force (series_spring_damper).
+  // explicit in its force (series_spring_damper). For a table it is the
+  // inverse of P, scale 1: x = P^-1(F / scale).
   ForceCharacteristic<S> inverse() const {
     if (!is_table) return linear(S(1) / coefficient);
     for (size_t i = 1; i < f.size(); ++i)
@@ -78,6 +84,30 @@ template <class S> struct ForceCharacteristic {
 
   template <class T> T force(const T& xv) const {
     if (!is_table) return lift<T>(coefficient) * xv;
+    return lift<T>(scale) * table_force(xv);
+  }
+  double value(double xv) const { return force<double>(xv); }
+
+  // Integral of F from 0 to x (the potential of a spring characteristic).
+  double integral(double xv) const {
+    if (!is_table) return 0.5 * value_of(coefficient) * xv * xv;
+    return value_of(scale) * (antiderivative(xv) - antiderivative(0.0));
+  }
+
+  template <class S2> ForceCharacteristic<S2> cast() const {
+    ForceCharacteristic<S2> k;
+    k.is_table = is_table;
+    k.coefficient = lift<S2>(coefficient);
+    k.scale = lift<S2>(scale);
+    k.x = x;
+    k.f = f;
+    k.slope = slope;
+    return k;
+  }
+
+ private:
+  // P(x): the table's interpolant, unscaled.
+  template <class T> T table_force(const T& xv) const {
     const double xd = value_of(xv);
     if (xd <= x.front()) return T(f.front()) + T(slope.front()) * (xv - T(x.front()));
     if (xd >= x.back()) return T(f.back()) + T(slope.back()) * (xv - T(x.back()));
@@ -89,25 +119,7 @@ template <class S> struct ForceCharacteristic {
     return T(f[i]) * (T(2) * t3 - T(3) * t2 + T(1)) + T(h * slope[i]) * (t3 - T(2) * t2 + t) +
            T(f[i + 1]) * (T(-2) * t3 + T(3) * t2) + T(h * slope[i + 1]) * (t3 - t2);
   }
-  double value(double xv) const { return force<double>(xv); }
 
-  // Integral of F from 0 to x (the potential of a spring characteristic).
-  double integral(double xv) const {
-    if (!is_table) return 0.5 * value_of(coefficient) * xv * xv;
-    return antiderivative(xv) - antiderivative(0.0);
-  }
-
-  template <class S2> ForceCharacteristic<S2> cast() const {
-    ForceCharacteristic<S2> k;
-    k.is_table = is_table;
-    k.coefficient = lift<S2>(coefficient);
-    k.x = x;
-    k.f = f;
-    k.slope = slope;
-    return k;
-  }
-
- private:
   size_t segment(double xd) const {
     const auto it = std::upper_bound(x.begin(), x.end(), xd);
     return std::min<size_t>(size_t(it - x.begin()) - 1, x.size() - 2);

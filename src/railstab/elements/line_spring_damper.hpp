@@ -40,8 +40,12 @@ template <class S> struct LineSpringDamper {
     f("line", "m", value_of(preload_N), spring.slope_at_zero());
   }
   template <class F> void for_each_parameter(F&& f) {
+    // A table characteristic is varied by its scale factor, a linear one by
+    // its coefficient: each element has one parameter per characteristic.
     if (!spring.is_table) f("stiffness_N_per_m", -1, spring.coefficient);
+    else f("spring_force_scale", -1, spring.scale);
     if (!damper.is_table) f("damping_N_s_per_m", -1, damper.coefficient);
+    else f("damper_force_scale", -1, damper.scale);
   }
 
   template <class T>

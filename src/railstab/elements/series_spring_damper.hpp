@@ -9,6 +9,7 @@
 //   F = k_s (e - e_d)              (series spring)
 //   F = F_d(de_d/dt)               (damper: linear c v, or a table)
 //   =>  de_d/dt = F_d^-1(k_s (e - e_d))
+// (a table F_d = a P(v) with its scale a: de_d/dt = P^-1(k_s (e - e_d) / a))
 // For a linear damper the element's complex stiffness at s is
 //   K(s) = k_s c s / (k_s + c s):  a damper at low frequency, the spring
 // at high frequency. With a table, the damper's velocity is interpolated
@@ -55,6 +56,8 @@ template <class S> struct SeriesSpringDamper {
     if (!damper.is_table) {
       f("damping_N_s_per_m", -1, damper.coefficient);
       damper_velocity.coefficient = S(1.0) / damper.coefficient;  // keep the inverse consistent
+    } else {
+      f("damper_force_scale", -1, damper.scale);  // the inverse divides by it (apply)
     }
   }
 
@@ -62,7 +65,9 @@ template <class S> struct SeriesSpringDamper {
   void apply(const Attachment<T>& a1, const Attachment<T>& a2, const T* z, T* zdot) const {
     const LineMotion<T> m = line_motion(a1, ends.point1_m, a2, ends.point2_m);
     const T tension = lift<T>(series_stiffness_N_per_m) * (m.length_m - T(free_length_m) - z[0]);
-    zdot[0] = damper_velocity.force(tension);
+    // A table's inverse is of P alone: v = P^-1(F / a); a linear damper's
+    // scale is 1.
+    zdot[0] = damper_velocity.force(T(tension / lift<T>(damper.scale)));
     apply_line_tension(a1, a2, m, tension);
   }
 

@@ -25,6 +25,13 @@ std::string file_stem(std::string_view name) {
   return stem;
 }
 
+std::string scene_file_stem(std::string_view scene_path) {
+  const std::string_view name = scene_path.substr(scene_path.find_last_of('/') + 1);  // npos + 1 = 0
+  const size_t dot = name.rfind('.');
+  // "a.toml" -> "a"; a name that is only an extension (".toml") keeps it.
+  return file_stem(dot == std::string_view::npos || dot == 0 ? name : name.substr(0, dot));
+}
+
 std::string speed_file_tag(double speed_m_per_s) {
   if (!std::isfinite(speed_m_per_s) || std::abs(speed_m_per_s) > 1e6)
     throw std::invalid_argument("speed " + std::to_string(speed_m_per_s) +

@@ -21,6 +21,12 @@ inline constexpr std::size_t kMaxFileStemLength = 80;
 
 std::string file_stem(std::string_view name);
 
+// The stem every command's outputs start with: the scene file's name without
+// its folder and its last extension ("cases/coach_k6.toml" -> "coach_k6"),
+// made safe by file_stem. The file, not the scene's `name`: two copies of a
+// scene that differ in one value keep their own outputs in one folder.
+std::string scene_file_stem(std::string_view scene_path);
+
 // "<V>mps" with V the speed rounded to 0.01 m/s, trailing zeros dropped
 // ("30mps", "36.9mps", "12.35mps"), for names like <stem>_eigen_36.9mps.json; throws std::invalid_argument for a
 // non-finite speed or one beyond 1e6 m/s.

@@ -29,13 +29,17 @@ template <class T> Attachment<T> attachment_of(BodyMotion<T>& m) {
   return Attachment<T>{&m, m.R_WF, m.p_W, m.v_W, m.w_F_W};
 }
 
-template <class T> Attachment<T> attachment_of(const TrackFrameKinematics& k) {
+// `dV`: d/dV of the frame's rates (BodyMotion::track_speed_derivative), or null.
+template <class T>
+Attachment<T> attachment_of(const TrackFrameKinematics& k, const TrackFrameKinematics* dV = nullptr) {
   Attachment<T> a;
   a.body = nullptr;
   a.R_WF = k.R_WT.template cast<T>();
   a.origin_W = to_scalar<T>(k.geometry.p_WT_W);
-  a.origin_v_W = to_scalar<T>(Eigen::Vector3d(k.R_WT * k.v_WT_T));
-  a.w_W = to_scalar<T>(Eigen::Vector3d(k.R_WT * k.w_WT_T));
+  const Eigen::Vector3d dv_W = dV ? Eigen::Vector3d(k.R_WT * dV->v_WT_T) : Eigen::Vector3d::Zero();
+  const Eigen::Vector3d dw_W = dV ? Eigen::Vector3d(k.R_WT * dV->w_WT_T) : Eigen::Vector3d::Zero();
+  a.origin_v_W = seeded_vector<T>(Eigen::Vector3d(k.R_WT * k.v_WT_T), dV ? &dv_W : nullptr);
+  a.w_W = seeded_vector<T>(Eigen::Vector3d(k.R_WT * k.w_WT_T), dV ? &dw_W : nullptr);
   return a;
 }
 

@@ -39,6 +39,11 @@ namespace railstab {
 template <class T> struct BodyMotion {
   Eigen::Matrix<T, 6, 1> q, qd;  // all six coordinates and rates
   const TrackFrameKinematics* track = nullptr;
+  // d/dV of the track frame's velocities and accelerations (its pose does
+  // not depend on V at a given arc length), when the model is
+  // differentiated in the speed (ModelTpl::differentiated_in_speed): they
+  // enter T's Dual direction. Null otherwise.
+  const TrackFrameKinematics* track_speed_derivative = nullptr;
   Mat3<T> R_WT, R_TI, R_IB, R_WI;
   Vec3<T> p_W, v_W;             // CM position and velocity in W
   Vec3<T> w_TI_I;               // relative rate of I w.r.t. T, in I (no spin)
@@ -59,15 +64,17 @@ template <class T> struct BodyMotion {
 template <class T, class S>
 void compute_body_motion(const BodyTpl<S>& body, const TrackFrameKinematics& track,
                          const Eigen::Matrix<T, 6, 1>& q, const Eigen::Matrix<T, 6, 1>& qd,
-                         BodyMotion<T>& m) {
+                         BodyMotion<T>& m, const TrackFrameKinematics* track_speed_derivative = nullptr) {
   using std::cos;
   using std::sin;
   m.q = q;
   m.qd = qd;
   m.track = &track;
+  m.track_speed_derivative = track_speed_derivative;
+  const TrackFrameKinematics* dV = track_speed_derivative;
   m.R_WT = track.R_WT.template cast<T>();
-  const Vec3<T> w_T = to_scalar<T>(track.w_WT_T);
-  const Vec3<T> v_T = to_scalar<T>(track.v_WT_T);
+  const Vec3<T> w_T = seeded_vector<T>(track.w_WT_T, dV ? &dV->w_WT_T : nullptr);
+  const Vec3<T> v_T = seeded_vector<T>(track.v_WT_T, dV ? &dV->v_WT_T : nullptr);
   const Vec3<T> w = q.template head<3>();
   const Vec3<T> wd = qd.template head<3>();
   const T roll = q(3), pitch = q(4), yaw = q(5);
@@ -126,9 +133,10 @@ Eigen::Matrix<T, 6, 1> body_accelerations(const BodyTpl<S>& body, const BodyMoti
   using std::cos;
   using std::sin;
   const TrackFrameKinematics& k = *m.track;
-  const Vec3<T> w_T = to_scalar<T>(k.w_WT_T);
-  const Vec3<T> alpha_T = to_scalar<T>(k.alpha_WT_T);
-  const Vec3<T> a_T = to_scalar<T>(k.a_WT_T);
+  const TrackFrameKinematics* dV = m.track_speed_derivative;
+  const Vec3<T> w_T = seeded_vector<T>(k.w_WT_T, dV ? &dV->w_WT_T : nullptr);
+  const Vec3<T> alpha_T = seeded_vector<T>(k.alpha_WT_T, dV ? &dV->alpha_WT_T : nullptr);
+  const Vec3<T> a_T = seeded_vector<T>(k.a_WT_T, dV ? &dV->a_WT_T : nullptr);
   const Vec3<T> w = m.q.template head<3>();
   const Vec3<T> wd = m.qd.template head<3>();
   Eigen::Matrix<T, 6, 1> acc = Eigen::Matrix<T, 6, 1>::Zero();

@@ -21,12 +21,20 @@ void compute_all_body_motions(const ModelTpl<ParameterScalar<T>>& model, Workspa
       if (k >= 0) {
         q(i) = x(k);
         qd(i) = x(n + k);
+      } else if (model.differentiated_in_speed) {
+        // q = nominal + offset + (initial rate + steady rate(V)) t, the
+        // steady rate linear in V: d/dV = steady_rate(1) (t for the value).
+        const double d_rate = body.steady_rate(i, 1.0);
+        q(i) = seeded_scalar<T>(body.prescribed_value(i, t_s, speed_m_per_s, model.speed_rate_m_per_s2),
+                                d_rate * t_s);
+        qd(i) = seeded_scalar<T>(body.prescribed_rate(i, model.speed_at(t_s, speed_m_per_s)), d_rate);
       } else {  // prescribed: nominal + offset + rate t
         q(i) = T(body.prescribed_value(i, t_s, speed_m_per_s, model.speed_rate_m_per_s2));
         qd(i) = T(body.prescribed_rate(i, model.speed_at(t_s, speed_m_per_s)));
       }
     }
-    compute_body_motion(body, ws.frames[b], q, qd, ws.motions[b]);
+    compute_body_motion(body, ws.frames[b], q, qd, ws.motions[b],
+                        ws.frames_speed_derivative.empty() ? nullptr : &ws.frames_speed_derivative[b]);
   }
 }
 

@@ -54,8 +54,11 @@ void compute_all_body_motions(const ModelTpl<ParameterScalar<T>>& model, Workspa
 template <class T>
 std::pair<Attachment<T>, Attachment<T>> element_attachments(const ElementEnds& ends,
                                                             Workspace<T>& ws) {
-  Attachment<T> a1 = ends.body1 == kTrackBody ? attachment_of<T>(ws.frames[ends.body2])
-                                              : attachment_of(ws.motions[ends.body1]);
+  Attachment<T> a1 =
+      ends.body1 == kTrackBody
+          ? attachment_of<T>(ws.frames[ends.body2],
+                             ws.frames_speed_derivative.empty() ? nullptr : &ws.frames_speed_derivative[ends.body2])
+          : attachment_of(ws.motions[ends.body1]);
   return {a1, attachment_of(ws.motions[ends.body2])};
 }
 

@@ -53,6 +53,11 @@ template <class S> struct ModelTpl {
   double reference_arc_length_m = 0.0;
   // dV/dt of time-domain runs (m/s^2; < 0 decelerates); 0: constant speed.
   double speed_rate_m_per_s2 = 0.0;
+  // The speed V is a direction of the parameter scalar S (ParamDual): the
+  // evaluation seeds dV/dV = 1 in the track frames' rates, the prescribed
+  // rates and the creepages' V (sensitivity/parameter_derivative.hpp,
+  // kSpeedParameter). Off for every analysis; meaningless for double.
+  bool differentiated_in_speed = false;
   std::vector<BodyTpl<S>> bodies;
   std::vector<ModelContactTpl<S>> contacts;
   std::vector<ElementTpl<S>> elements;
@@ -131,6 +136,7 @@ template <class S> struct ModelTpl {
     m.gravity_m_per_s2 = gravity_m_per_s2;
     m.reference_arc_length_m = reference_arc_length_m;
     m.speed_rate_m_per_s2 = speed_rate_m_per_s2;
+    m.differentiated_in_speed = differentiated_in_speed;
     for (const BodyTpl<S>& b : bodies) m.bodies.push_back(b.template cast<S2>());
     for (const ModelContactTpl<S>& c : contacts) m.contacts.push_back(c.template cast<S2>());
     for (const ElementTpl<S>& e : elements)

@@ -121,8 +121,8 @@ std::string run_file_tag(const RunConditions& c) {
 }
 
 // Not through run_conditions(): naming needs no hash of the scene file.
-std::string steady_state_file_stem(const Model& model) {
-  return file_stem(model.name) + arc_tag(all_bodies_on_tangent(model), model.reference_arc_length_m);
+std::string steady_state_file_stem(const std::string& scene_path, const Model& model) {
+  return scene_file_stem(scene_path) + arc_tag(all_bodies_on_tangent(model), model.reference_arc_length_m);
 }
 
 void write_conditions_json(JsonWriter& j, const RunConditions& c,

@@ -43,9 +43,10 @@ RunConditions run_conditions(const Model& model);
 // otherwise: appended to the file stem of steady-state analyses.
 std::string run_file_tag(const RunConditions& conditions);
 
-// The scene name made safe (io/file_names.hpp) plus run_file_tag: the
-// stem of equilibrium, eigen, critical-speed, modes and verify outputs.
-std::string steady_state_file_stem(const Model& model);
+// The scene file's stem (io/file_names.hpp, scene_file_stem) plus
+// run_file_tag: the stem of equilibrium, eigen, critical-speed, modes,
+// bifurcation, check and verify outputs.
+std::string steady_state_file_stem(const std::string& scene_path, const Model& model);
 
 // "conditions": {...} into an open JSON object; with `speeds`, the cant
 // deficiency at each.

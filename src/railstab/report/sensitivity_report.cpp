@@ -37,7 +37,7 @@ void write_json(std::ostream& out, const CriticalSpeedSensitivities& s, const Se
       .field("eigenvalue_imag_per_s", s.eigenvalue.imag())
       .field("eigenvalue_real_speed_derivative_per_m", s.real_part_speed_derivative)
       .field("method", "dVc/dp = -(dRe lambda/dp)/(dRe lambda/dV) at the critical speed; dlambda/dp "
-                       "exact (left/right eigenvectors, AD dA/dp), dRe lambda/dV central difference");
+                       "exact (left/right eigenvectors, AD dA/dp), dRe lambda/dV exact (AD dA/dV)");
   j.key("parameters").begin_array();
   for (size_t i = 0; i < s.parameters.size(); ++i) {
     const ParameterSensitivity& p = s.parameters[i];
@@ -73,7 +73,7 @@ void write_markdown(std::ostream& md, const CriticalSpeedSensitivities& s, const
         "theorem); d lambda/dp from the left and right eigenvectors and the exact AD dA/dp "
         "(equilibrium and preloads included), d Re lambda/dV = "
      << s.real_part_speed_derivative
-     << " 1/s per m/s by central difference. Elasticity = (p/Vc) dVc/dp: the relative change of "
+     << " 1/s per m/s, exact the same way with the speed as the parameter. Elasticity = (p/Vc) dVc/dp: the relative change of "
         "the critical speed per relative change of p.\n\n";
   if (plot) md << "![tornado plot](" << stem << "_sensitivity_tornado.png)\n\n";
   md << "| rank | parameter | value | dVc/dp (m/s per unit) | elasticity |\n|---|---|---|---|---|\n";

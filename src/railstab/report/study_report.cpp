@@ -44,8 +44,12 @@ void write_json(std::ostream& out, const StudyDefinition& d, const StudyShard& s
   j.key("study").begin_object();
   j.field("scene_file", d.scene_path).field("scene", d.scene_name).field("scene_fnv1a64", d.scene_hash);
   j.key("set").begin_array();
-  for (const SceneValueSetting& s : d.fixed)
-    j.begin_object().field("key", s.key).field("value", s.value).end_object();
+  for (const SceneValueSetting& s : d.fixed) {
+    j.begin_object().field("key", s.key);
+    if (s.toml_value.empty()) j.field("value", s.value);
+    else j.field("toml_value", s.toml_value);
+    j.end_object();
+  }
   j.end_array();
   j.key("vary").begin_array();
   for (const VariedKey& v : d.varied)

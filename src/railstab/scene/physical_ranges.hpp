@@ -87,6 +87,11 @@ inline constexpr PhysicalRange actuator_moment_N_m{"an actuator moment", -1e7, 1
 inline constexpr PhysicalRange table_deflection_m{"a deflection", -10.0, 10.0, "m"};
 inline constexpr PhysicalRange table_velocity_m_per_s{"a velocity", -100.0, 100.0, "m/s"};
 inline constexpr PhysicalRange table_force_N{"a force", -1e8, 1e8, "N"};
+// The scale factor of a table's forces (spring_force_scale,
+// damper_force_scale): a study or a sensitivity varies a table damper by it.
+// 0 is refused (a series damper's velocity is the inverse table at F / scale);
+// 100 times a measured characteristic is certainly a unit slip.
+inline constexpr PhysicalRange table_force_scale{"a scale factor", 0.0, 100.0, "", true};
 // Bump-stop clearances and smoothing lengths, anti-roll-bar link spacing.
 inline constexpr PhysicalRange clearance_m{"a clearance", 0.0, 1.0, "m"};
 inline constexpr PhysicalRange smoothing_length_m{"a smoothing length", 1e-7, 0.1, "m"};

@@ -62,11 +62,39 @@ std::string node_kind(const toml::node& node) {
   }
 }
 
+// A TOML value given as text ("{ y_m = 0.001 }", "[1, 2]", "\"polach\"",
+// "true"), parsed as the value of a key; throws std::invalid_argument saying
+// what was expected and what TOML made of it.
+toml::table parsed_value_document(const std::string& key, const std::string& text) {
+  try {
+    toml::table doc = toml::parse("value = " + text);
+    if (doc.size() != 1 || !doc.contains("value")) throw std::invalid_argument("");
+    return doc;
+  } catch (const toml::parse_error& e) {
+    throw std::invalid_argument(
+        "expected a number or one TOML value (an inline table like {y_m = 0.001}, an array "
+        "like [1.0, 2.0], a quoted string, true or false) as the value of " + key + ", got '" +
+        text + "' (" + std::string(e.description()) + ")");
+  } catch (const std::invalid_argument&) {
+    throw std::invalid_argument("expected one TOML value as the value of " + key + ", got '" +
+                                text + "' (more than one value)");
+  }
+}
+
+// Does VALUE's text ask for a TOML value rather than a number?
+bool is_toml_value_text(std::string_view value) {
+  if (value.empty()) return false;
+  const char c = value.front();
+  return c == '{' || c == '[' || c == '"' || c == '\'' || value == "true" || value == "false";
+}
+
 // Applies one setting to `root`; throws std::invalid_argument with what is
 // wrong (the caller adds the file and the flag).
 class SettingWriter {
  public:
-  explicit SettingWriter(const SceneValueSetting& setting) : setting_(setting), parts_(split_dots(setting.key)) {}
+  explicit SettingWriter(const SceneValueSetting& setting) : setting_(setting), parts_(split_dots(setting.key)) {
+    if (!setting.toml_value.empty()) value_document_ = parsed_value_document(setting.key, setting.toml_value);
+  }
 
   void apply(toml::table& root) {
     if (setting_.key.empty()) throw std::invalid_argument("expected a key path before '='");
@@ -96,6 +124,33 @@ class SettingWriter {
   }
 
   static std::string place(const std::string& where) { return where.empty() ? "the scene" : where; }
+
+  // Steps at..end are keys without an index.
+  bool plain_keys_from(size_t at) const {
+    for (size_t i = at; i < parts_.size(); ++i) {
+      const std::optional<PathStep> step = parse_step(parts_[i]);
+      if (!step || step->index || step->key.empty()) return false;
+    }
+    return true;
+  }
+
+  // The setting's value written under `key` of `table` (a number, or a copy
+  // of the parsed TOML value).
+  void put(toml::table& table, const std::string& key) const {
+    if (value_document_.empty()) {
+      table.insert_or_assign(key, setting_.value);
+      return;
+    }
+    value_document_.get("value")->visit([&](const auto& v) { table.insert_or_assign(key, v); });
+  }
+  void put(toml::array& array, size_t index) const {
+    const auto at = array.cbegin() + std::ptrdiff_t(index);
+    if (value_document_.empty()) {
+      array.replace(at, setting_.value);
+      return;
+    }
+    value_document_.get("value")->visit([&](const auto& v) { array.replace(at, v); });
+  }
 
   void descend(toml::node& node, size_t at, const std::string& where) {
     const bool is_array_of_tables = node.is_array() && node.as_array()->is_array_of_tables();
@@ -135,7 +190,8 @@ class SettingWriter {
                                       (array->size() == 1 ? " element" : " elements") +
                                       " (indices from 0)");
         child = array->get(*step->index);
-        slot_ = Slot{nullptr, "", array, *step->index};
+        // An entry of an array of tables is never written whole.
+        slot_ = array->is_array_of_tables() ? Slot{} : Slot{nullptr, "", array, *step->index};
       }
       if (end == parts_.size()) return write(*child, here + (step->index ? "[" + std::to_string(*step->index) + "]" : ""));
       return descend(*child, end, here + (step->index ? "[" + std::to_string(*step->index) + "]" : ""));
@@ -153,15 +209,23 @@ class SettingWriter {
                                       (array.size() == 1 ? " entry" : " entries") +
                                       " (indices from 0)");
         toml::node& entry = *array.get(*step->index);
+        slot_ = Slot{};  // an entry is a table, never written whole
         const std::string entry_where = here + "[" + std::to_string(*step->index) + "]";
         if (at + 1 == parts_.size()) return write(entry, entry_where);
         return descend(entry, at + 1, entry_where);
       }
     }
-    // A last key the table does not hold is added; the reader decides
-    // whether that table may have it.
-    if (at + 1 == parts_.size() && node.is_table() && step && !step->index) {
-      node.as_table()->insert_or_assign(step->key, setting_.value);
+    // A key the table does not hold is added, with the tables on the way
+    // to it when the rest of the path has none of its own (an optional key
+    // or section at its default); the reader decides whether the scene may
+    // have them. An index asks for an array that is not there: refused.
+    // Not a new entry of a named collection ([contacts.<name>]): a name
+    // that is not there is a typo, refused below with the names there are.
+    if (node.is_table() && plain_keys_from(at) && where != "contacts") {
+      toml::table* table = node.as_table();
+      for (size_t i = at; i + 1 < parts_.size(); ++i)
+        table = table->insert_or_assign(parts_[i], toml::table{}).first->second.as_table();
+      put(*table, parts_.back());
       return;
     }
     throw std::invalid_argument(place(where) + " has no '" + parts_[at] + "' (it has: " +
@@ -177,6 +241,13 @@ class SettingWriter {
   };
 
   void write(toml::node& node, const std::string& where) {
+    if (!value_document_.empty()) {  // a TOML value replaces whatever is there
+      if (slot_.table) return put(*slot_.table, slot_.key);
+      if (slot_.array) return put(*slot_.array, slot_.index);
+      throw std::invalid_argument(where + " is an entry of an array of tables, which --set does "
+                                  "not replace whole: set its keys one by one (" + setting_.key +
+                                  ".KEY=VALUE)");
+    }
     const double v = setting_.value;
     if (node.is_integer() && v == std::floor(v) && std::abs(v) < 9.0e15) {
       node.ref<int64_t>() = int64_t(v);  // an integer stays one (an order, a count)
@@ -195,11 +266,15 @@ class SettingWriter {
       throw std::invalid_argument(where + " is an array of " +
                                   std::to_string(node.as_array()->size()) +
                                   " values: give an index, e.g. " + setting_.key + "[0]");
-    throw std::invalid_argument(where + " is " + node_kind(node) + " in the scene, not a number");
+    throw std::invalid_argument(where + " is " + node_kind(node) +
+                                " in the scene, not a number: give a value of that kind (e.g. " +
+                                setting_.key + "={...} for a table, [...] for an array, \"...\" "
+                                "for a string)");
   }
 
   const SceneValueSetting& setting_;
   std::vector<std::string> parts_;
+  toml::table value_document_;  // { value = <the TOML value> }; empty for a number
   Slot slot_;  // of the node write() is given
 };
 
@@ -212,7 +287,8 @@ std::string number_text_exact(double value) {
 }
 
 std::string setting_text(const SceneValueSetting& setting) {
-  return setting.key + "=" + number_text_exact(setting.value);
+  return setting.key + "=" +
+         (setting.toml_value.empty() ? number_text_exact(setting.value) : setting.toml_value);
 }
 
 SceneValueSetting parse_scene_value_setting(std::string_view text) {
@@ -226,11 +302,17 @@ SceneValueSetting parse_scene_value_setting(std::string_view text) {
     throw std::invalid_argument("expected KEY=VALUE with a key path before '=', got '" +
                                 std::string(text) + "'");
   std::string_view value = text.substr(eq + 1);
+  if (is_toml_value_text(value)) {
+    s.toml_value = std::string(value);
+    parsed_value_document(s.key, s.toml_value);  // throws what is wrong
+    return s;
+  }
   if (!value.empty() && value.front() == '+') value.remove_prefix(1);
   const auto r = std::from_chars(value.data(), value.data() + value.size(), s.value);
   if (value.empty() || r.ec != std::errc() || r.ptr != value.data() + value.size() ||
       !std::isfinite(s.value))
-    throw std::invalid_argument("expected a finite number as the value of " + s.key + ", got '" +
+    throw std::invalid_argument("expected a finite number (or a TOML value: {...}, [...], \"...\", "
+                                "true, false) as the value of " + s.key + ", got '" +
                                 std::string(text.substr(eq + 1)) + "'");
   return s;
 }

@@ -26,15 +26,6 @@ std::pair<std::complex<double>, Eigen::VectorXcd> nearest_eigenpair(const Eigen:
   return {solver.eigenvalues()(best), solver.eigenvectors().col(best)};
 }
 
-// The state matrix at speed V (the analyses' equilibrium and linearisation).
-Eigen::MatrixXd state_matrix_at(const SceneSpec& scene, double V) {
-  SceneSpec spec = scene;
-  spec.speed_m_per_s = V;
-  const Model model = build_model(spec);
-  const Eigen::VectorXd x = solve_equilibrium(model, V, lowered_nominal_state(model, V)).state;
-  return linearize(model, V, x).A;
-}
-
 }  // namespace
 
 CriticalSpeedSensitivities critical_speed_sensitivities(const SceneSpec& scene, double Vc,
@@ -46,14 +37,11 @@ CriticalSpeedSensitivities critical_speed_sensitivities(const SceneSpec& scene, 
   out.critical_speed_m_per_s = Vc;
   const std::complex<double> target(0.0, 2.0 * std::numbers::pi * hunting_frequency_hz);
 
-  // d Re lambda / dV by central difference, the eigenvalue followed by nearness.
-  const double h = options.speed_step_m_per_s;
-  const Eigen::MatrixXd A0 = state_matrix_at(scene, Vc);
-  const auto [lambda, v0] = nearest_eigenpair(A0, target);
+  // d Re lambda / dV exactly: V as the parameter (kSpeedParameter).
+  const StateMatrixDerivative dV = state_matrix_derivative(scene, Vc, kSpeedParameter);
+  const auto [lambda, v0] = nearest_eigenpair(dV.linear.A, target);
   out.eigenvalue = lambda;
-  const std::complex<double> up = nearest_eigenpair(state_matrix_at(scene, Vc + h), lambda).first;
-  const std::complex<double> down = nearest_eigenpair(state_matrix_at(scene, Vc - h), lambda).first;
-  out.real_part_speed_derivative = (up.real() - down.real()) / (2.0 * h);
+  out.real_part_speed_derivative = eigenvalue_derivative(dV.linear.A, dV.A_derivative, lambda, v0).real();
   if (!(std::abs(out.real_part_speed_derivative) > 0.0) || !std::isfinite(out.real_part_speed_derivative))
     throw std::runtime_error("critical-speed sensitivity: the hunting eigenvalue's real part does not "
                              "change with speed at " + std::to_string(Vc) + " m/s (no crossing there)");

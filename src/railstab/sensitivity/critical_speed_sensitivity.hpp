@@ -9,11 +9,12 @@
 // with d lambda/dp = w^H (dA/dp) v / (w^H v) (eigenvalue_derivative; right
 // and left eigenvectors v, w of the state matrix A, dA/dp exact by AD along
 // p, the equilibrium's and the preloads' dependence on p included:
-// parameter_derivative.hpp). d Re lambda / dV is the central difference of
-// the same eigenvalue (nearest to lambda) at Vc +- h, h = speed_step_m_per_s
-// (Re lambda is smooth in V; the error is O(h^2), h = 0.05 m/s gives ~1e-6
-// relative on the thesis vehicle). It is one number for all parameters, so
-// it scales every dVc/dp alike and cannot change the ranking.
+// parameter_derivative.hpp). d Re lambda / dV is exact the same way, with V
+// as the parameter (kSpeedParameter: the track frames' rates, the spin, the
+// creepages, the steady state and the preloads' twin differentiated in V);
+// before it was a central difference at Vc +- 0.05 m/s (error ~1e-7
+// relative). It is one number for all parameters, so it scales every dVc/dp
+// alike and cannot change the ranking.
 //
 // The ranking is by the elasticity (p / Vc) dVc/dp: the relative change of
 // the critical speed per relative change of p (dimensionless, so a
@@ -35,7 +36,6 @@ struct ParameterSensitivity {
 };
 
 struct CriticalSpeedSensitivityOptions {
-  double speed_step_m_per_s = 0.05;  // h of d Re lambda / dV
   double max_frequency_hz = 20.0;    // the hunting band (picks lambda)
 };
 

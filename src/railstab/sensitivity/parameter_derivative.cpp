@@ -77,6 +77,10 @@ template <class S, class F> int visit_parameter(ModelTpl<S>& model, const std::s
 
 ModelTpl<ParamDual> seeded(const Model& model, const SceneSpec& scene, const std::string& key) {
   ModelTpl<ParamDual> m = model.cast<ParamDual>();
+  if (key == kSpeedParameter) {
+    m.differentiated_in_speed = true;
+    return m;
+  }
   if (visit_parameter(m, key, [](ParamDual& p) { p.d = 1.0; }) == 0) unknown_parameter(scene, key);
   return m;
 }
@@ -117,6 +121,7 @@ std::vector<Vec3<ParamDual>> preload_derivatives(const SceneSpec& scene, const s
   // A key may name only elements left out of the sag: then nothing to seed.
   ModelTpl<ParamDual> twin_d = twin.cast<ParamDual>();
   visit_parameter(twin_d, key, [](ParamDual& p) { p.d = 1.0; });
+  twin_d.differentiated_in_speed = key == kSpeedParameter;  // the twin runs at the scene's speed
   const Eigen::VectorXd dxs = equilibrium_derivative(twin, twin_d, V, 0.0, xs);
   Workspace<ParamDual> ws(twin_d);
   compute_all_body_motions<ParamDual>(twin_d, ws, 0.0, V, dual_state(xs, dxs));
@@ -165,6 +170,7 @@ std::vector<std::string> parameter_keys(const SceneSpec& scene) {
 }
 
 double parameter_value(const SceneSpec& scene, const std::string& key) {
+  if (key == kSpeedParameter) return scene.speed_m_per_s;
   const Model model = assemble_model(scene);
   double value = std::numeric_limits<double>::quiet_NaN();
   ModelTpl<double> copy = model;
@@ -174,6 +180,10 @@ double parameter_value(const SceneSpec& scene, const std::string& key) {
 
 SceneSpec with_parameter(const SceneSpec& scene, const std::string& key, double value) {
   SceneSpec out = scene;
+  if (key == kSpeedParameter) {
+    out.speed_m_per_s = value;
+    return out;
+  }
   int matched = 0;
   for (BodySpec& b : out.bodies) {
     if (key == "bodies." + b.name + ".mass_kg") b.mass_kg = value, ++matched;

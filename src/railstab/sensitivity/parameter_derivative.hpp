@@ -21,6 +21,14 @@
 // Contact parameters: "contacts.<contact>.<key>" for the cone angle or the
 // conicity (by geometry) and the creep law's friction coefficient and
 // reduction factors (by law).
+//
+// The speed V is a parameter too, kSpeedParameter ("scene.speed_m_per_s",
+// the key --set takes): the model depends on V through the track frames'
+// rates (velocities V t, angular velocities V kappa; accelerations ~ V^2),
+// the wheelsets' prescribed spin V / r0 and the creepages' 1 / V, and the
+// steady state (curving, the free spin rates) and the preloads' twin through
+// these. ModelTpl::differentiated_in_speed seeds dV/dV = 1 in all of them,
+// so dA/dV is as exact as dA/dp (no longer a central difference).
 #include <railstab/linear/linearization.hpp>
 #include <railstab/model/model.hpp>
 #include <railstab/scene/scene_spec.hpp>
@@ -39,6 +47,8 @@ struct StateMatrixDerivative {
   LinearModel linear;                      // A at x* (cyclic states removed)
   Eigen::MatrixXd A_derivative;            // dA/dp on linear.kept_states
 };
+
+inline constexpr const char* kSpeedParameter = "scene.speed_m_per_s";
 
 // Throws std::invalid_argument naming the key when no parameter has it
 // (the message lists the keys that exist).

@@ -24,11 +24,15 @@ SceneSpec straight_twin(const SceneSpec& spec) {
 }
 
 // Elements that take no part in the gravity sag (kInGravitySag false: a
-// series spring-damper carries nothing at any equilibrium; a traction rod is
-// adjusted at the loaded position) are left out of it and get no preload.
-// Leaving the series elements out also keeps the solve fast: with a stiff
-// series spring (k_s ~ 1e9 N/m) the quadratic change of its length with the
-// 0.1-0.2 m sag of a soft secondary suspension makes Newton crawl.
+// series spring-damper carries nothing at any equilibrium) are left out of
+// it and get no preload. Leaving the series elements out also keeps the
+// solve fast: with a stiff series spring (k_s ~ 1e9 N/m) the quadratic
+// change of its length with the 0.1-0.2 m sag of a soft secondary
+// suspension makes Newton crawl. A traction rod takes part linearised about
+// its nominal line (elements/traction_rod.hpp): it carries the share of the
+// weight its line carries (a hanger, an inclined rod), and a rod across the
+// sag none, rather than fighting the sag through the second-order change of
+// its length.
 GravityTwin gravity_twin(const SceneSpec& scene) {
   GravityTwin twin{straight_twin(scene), {}};
   twin.spec.elements.clear();
@@ -37,6 +41,8 @@ GravityTwin gravity_twin(const SceneSpec& scene) {
                    scene.elements[i])) {
       twin.kept.push_back(i);
       twin.spec.elements.push_back(scene.elements[i]);
+      if (auto* rod = std::get_if<TractionRod<double>>(&twin.spec.elements.back()))
+        rod->linearised_about_nominal_line = true;
     }
   return twin;
 }

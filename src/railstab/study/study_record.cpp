@@ -110,7 +110,10 @@ void write_study_record(std::ostream& out, const StudyDefinition& d, const Study
                     {"eigen_solver", d.analysis.solver},
                     {"hunting_band_Hz", d.analysis.hunting_band_hz}};
   toml::array set, vary, rows;
-  for (const SceneValueSetting& s : d.fixed) set.push_back(toml::table{{"key", s.key}, {"value", s.value}});
+  // A number as a number (exact); a TOML value (a table, an array) as its text.
+  for (const SceneValueSetting& s : d.fixed)
+    set.push_back(s.toml_value.empty() ? toml::table{{"key", s.key}, {"value", s.value}}
+                                       : toml::table{{"key", s.key}, {"toml_value", s.toml_value}});
   for (const VariedKey& v : d.varied)
     vary.push_back(toml::table{{"key", v.key}, {"from", v.from}, {"to", v.to}, {"step", v.step}});
   for (const StudyPoint& p : points) {
@@ -162,7 +165,13 @@ StudyRecord read_study_record(const std::string& path) {
   for (const toml::node& n : array_at(s, "set", path, "study.")) {
     const toml::table* t = n.as_table();
     if (!t) fail(path, "study.set", "an array of tables");
-    d.fixed.push_back({text_at(*t, "key", path, "study.set."), number_at(*t, "value", path, "study.set."), ""});
+    if (t->contains("toml_value")) {
+      SceneValueSetting f(text_at(*t, "key", path, "study.set."), 0.0);
+      f.toml_value = text_at(*t, "toml_value", path, "study.set.");
+      d.fixed.push_back(std::move(f));
+    } else {
+      d.fixed.push_back({text_at(*t, "key", path, "study.set."), number_at(*t, "value", path, "study.set."), ""});
+    }
   }
   for (const toml::node& n : array_at(s, "vary", path, "study.")) {
     const toml::table* t = n.as_table();

@@ -36,12 +36,17 @@ concept ElementKindHasReader = requires(const TableReader& t) {
 
 // A force characteristic: `linear_key` (a coefficient) or `table_key`
 // ([[x, F], ...] with x strictly increasing), exactly one of them; neither
-// gives a zero coefficient when not `required`.
+// gives a zero coefficient when not `required`. A table has the scale
+// factor `scale_key` (F = scale P(x), default 1, in
+// physical_ranges::table_force_scale): the parameter that varies it in
+// --set, study and sensitivity as the coefficient varies a linear one; the
+// key beside a coefficient (or nothing) is refused.
 ForceCharacteristic<double> read_force_characteristic(const TableReader& t,
                                                       std::string_view linear_key,
                                                       const PhysicalRange& linear_range,
                                                       std::string_view table_key,
                                                       const PhysicalRange& x_range,
+                                                      std::string_view scale_key,
                                                       bool required = true);
 
 }  // namespace railstab::scene_reading

@@ -11,9 +11,15 @@ ForceCharacteristic<double> read_force_characteristic(const TableReader& t,
                                                       std::string_view linear_key,
                                                       const PhysicalRange& linear_range,
                                                       std::string_view table_key,
-                                                      const PhysicalRange& x_range, bool required) {
+                                                      const PhysicalRange& x_range,
+                                                      std::string_view scale_key, bool required) {
   const std::string_view linear_unit = linear_range.unit, x_unit = x_range.unit;
   const bool has_linear = t.has(linear_key), has_table = t.has(table_key);
+  if (t.has(scale_key) && !has_table)
+    t.fail(scale_key,
+           "a scale factor beside " + std::string(table_key) + " (a linear characteristic is varied by " +
+               std::string(linear_key) + " itself)",
+           "no " + std::string(table_key));
   if (has_linear && has_table)
     t.fail(table_key, "either " + std::string(linear_key) + " or " + std::string(table_key),
            "both");
@@ -47,7 +53,9 @@ ForceCharacteristic<double> read_force_characteristic(const TableReader& t,
                        format_number(xs[i]));
   }
   if (xs.size() < 2) t.fail(table_key, expected, std::to_string(xs.size()) + " rows");
-  return ForceCharacteristic<double>::table(xs, fs);
+  ForceCharacteristic<double> table = ForceCharacteristic<double>::table(xs, fs);
+  table.scale = ranged(t, scale_key, physical_ranges::table_force_scale, 1.0);
+  return table;
 }
 
 }  // namespace railstab::scene_reading

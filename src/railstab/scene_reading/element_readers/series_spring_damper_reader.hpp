@@ -9,8 +9,9 @@
 namespace railstab::scene_reading {
 
 template <> struct ElementReader<SeriesSpringDamper<double>> {
-  static constexpr std::array<std::string_view, 3> kKeys = {
-      "series_stiffness_N_per_m", "damping_N_s_per_m", "damper_force_velocity_table"};
+  static constexpr std::array<std::string_view, 4> kKeys = {
+      "series_stiffness_N_per_m", "damping_N_s_per_m", "damper_force_velocity_table",
+      "damper_force_scale"};
   static constexpr bool kPointsRequired = true;
   static SeriesSpringDamper<double> read(const TableReader& t) {
     SeriesSpringDamper<double> e;
@@ -18,7 +19,7 @@ template <> struct ElementReader<SeriesSpringDamper<double>> {
         ranged(t, "series_stiffness_N_per_m", physical_ranges::positive_stiffness_N_per_m);
     const ForceCharacteristic<double> damper = read_force_characteristic(
         t, "damping_N_s_per_m", physical_ranges::damping_N_s_per_m, "damper_force_velocity_table",
-        physical_ranges::table_velocity_m_per_s);
+        physical_ranges::table_velocity_m_per_s, "damper_force_scale");
     // The internal state is the damper's velocity as a function of its force.
     if (!damper.strictly_increasing())
       t.fail(damper.is_table ? "damper_force_velocity_table" : "damping_N_s_per_m",
