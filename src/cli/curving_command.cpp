@@ -1,5 +1,6 @@
 #include "cli/curving_command.hpp"
 
+#include "cli/numeric_flags.hpp"
 #include "cli/scene_command.hpp"
 #include <railstab/curving/steady_curving.hpp>
 #include <railstab/io/file_names.hpp>
@@ -11,7 +12,6 @@
 #include <cmath>
 #include <iostream>
 #include <memory>
-#include <sstream>
 #include <stdexcept>
 #include <vector>
 
@@ -43,20 +43,14 @@ std::vector<double> parse_values(const std::string& text, const Quantity& q) {
     throw std::invalid_argument(std::string(q.flag) + ": expected a value or FROM:TO:STEP in metres, each " +
                                 q.range + " (STEP > 0), got '" + text + "': " + why);
   };
-  std::vector<std::string> parts;
-  std::stringstream ss(text);
-  for (std::string p; std::getline(ss, p, ':');) parts.push_back(p);
-  if (!text.empty() && text.back() == ':') parts.push_back("");
+  const std::vector<std::string> parts = colon_fields(text);
   if (parts.size() != 1 && parts.size() != 3) fail("not one value or three fields");
   auto number = [&](const std::string& p, const char* what) {
-    size_t used = 0;
     double v = 0;
-    try {
-      v = std::stod(p, &used);
-    } catch (const std::exception&) {
-      fail(std::string(what) + " is not a number");
-    }
-    if (used != p.size() || !std::isfinite(v)) fail(std::string(what) + " is not a finite number");
+    const FieldNumber read = read_field_number(p, v);
+    if (read == FieldNumber::not_a_number) fail(std::string(what) + " is not a number");
+    if (read != FieldNumber::ok || !std::isfinite(v))
+      fail(std::string(what) + " is not a finite number");
     return v;
   };
   auto in_range = [&](double v, const char* what) {

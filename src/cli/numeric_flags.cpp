@@ -51,4 +51,22 @@ void check_speed_grid(double from, double to, double step, const SpeedGridNames&
   }
 }
 
+std::vector<std::string> colon_fields(const std::string& text) {
+  std::vector<std::string> parts;
+  std::stringstream ss(text);
+  for (std::string p; std::getline(ss, p, ':');) parts.push_back(p);
+  if (!text.empty() && text.back() == ':') parts.push_back("");
+  return parts;
+}
+
+FieldNumber read_field_number(const std::string& field, double& value) {
+  size_t used = 0;
+  try {
+    value = std::stod(field, &used);
+  } catch (const std::exception&) {
+    return FieldNumber::not_a_number;
+  }
+  return used == field.size() ? FieldNumber::ok : FieldNumber::trailing_text;
+}
+
 }  // namespace railstab

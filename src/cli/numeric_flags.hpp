@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include <string>
+#include <vector>
 
 namespace railstab {
 
@@ -69,5 +70,15 @@ struct SpeedGridNames {
 // and (to - from) / step + 1 at most kMaxSpeedGridPoints.
 void check_speed_grid(double from_m_per_s, double to_m_per_s, double step_m_per_s,
                       const SpeedGridNames& names = {});
+
+// A FROM:TO:STEP-style flag value split at ':' ("a:" gives two fields, the
+// last empty, so a trailing colon is not silently dropped).
+std::vector<std::string> colon_fields(const std::string& text);
+
+// One field as a number (std::stod over the whole field): not_a_number
+// where it does not start with one, trailing_text where text follows it, ok
+// with `value` set (possibly not finite: the caller states the range).
+enum class FieldNumber { not_a_number, trailing_text, ok };
+FieldNumber read_field_number(const std::string& field, double& value);
 
 }  // namespace railstab

@@ -106,19 +106,12 @@ std::vector<double> parse_amplitudes(const std::string& text, double flange_m) {
     throw std::invalid_argument("--amplitudes: expected FROM:TO:STEP in metres (0 < FROM <= TO, "
                                 "STEP > 0, TO a number or 'flange'), got '" + text + "': " + why);
   };
-  std::vector<std::string> parts;
-  std::stringstream ss(text);
-  for (std::string p; std::getline(ss, p, ':');) parts.push_back(p);
+  const std::vector<std::string> parts = colon_fields(text);
   if (parts.size() != 3) fail("not three fields");
   auto number = [&](const std::string& p, const char* what) {
-    size_t used = 0;
     double v = 0;
-    try {
-      v = std::stod(p, &used);
-    } catch (const std::exception&) {
-      fail(std::string(what) + " is not a number");
-    }
-    if (used != p.size() || !std::isfinite(v) || !(v > 0)) fail(std::string(what) + " is not a finite positive number");
+    if (read_field_number(p, v) != FieldNumber::ok || !std::isfinite(v) || !(v > 0))
+      fail(std::string(what) + " is not a finite positive number");
     return v;
   };
   const double from = number(parts[0], "FROM"), step = number(parts[2], "STEP");
