@@ -131,7 +131,7 @@ void run_curving(const CurvingArgs& a) {
   const CurvingSweep sweep =
       sweep_steady_curving(model, kind, values, fixed, spec.assessment.prudhomme_factor);
   OutputSet outputs(a.out_dir);
-  const std::string summary = write_curving_results(model, sweep, kind, outputs, file_stem(model.name));
+  const std::string summary = write_curving_results(model, sweep, kind, outputs, scene_file_stem(a.scene));
   std::cout << summary;
   list_written(outputs.commit(), std::cout);
 }
