@@ -1,6 +1,7 @@
 #include <railstab/check/model_check.hpp>
 
 #include <railstab/core/dual.hpp>
+#include <railstab/curving/steady_curving.hpp>
 #include <railstab/frames/rotations.hpp>
 #include <railstab/linear/jacobian.hpp>
 #include <railstab/model/equations_of_motion.hpp>
@@ -307,7 +308,7 @@ void check_cant(const Model& model, double V, const ModelCheckLimits& L, ModelCh
     const double cant_outer = kappa > 0.0 ? cant : kappa < 0.0 ? -cant : -std::abs(cant);
     if (kappa != 0.0 && cant_outer < -L.cant_direction_min_m) note(inner, -cant_outer, name, p);
     if (!(g > 0.0)) continue;
-    const double I = D * V * V * std::abs(kappa) / g - cant_outer;
+    const double I = cant_deficiency_m(CurvingCondition{kappa, cant, V}, D, g);
     if (I > L.cant_deficiency_max_m) note(deficiency, I, name, p);
     if (-I > L.cant_excess_max_m) note(excess, -I, name, p);
   }
