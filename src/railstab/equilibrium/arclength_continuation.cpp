@@ -200,7 +200,17 @@ ArclengthResult continue_by_arclength(SteadyStatePath& path, const Eigen::Vector
     }
     new_tangent.normalize();
     if (new_tangent.dot(tangent) < 0.0) new_tangent = -new_tangent;
-    if ((new_tangent(m) > 0.0) != (tangent(m) > 0.0)) ++out.folds;
+    if ((new_tangent(m) > 0.0) != (tangent(m) > 0.0)) {
+      ++out.folds;
+      const double a = tangent(m), b = new_tangent(m), h = (zc - z).norm();
+      ArclengthResult::Fold fold;
+      fold.lambda = (z(m) + a * a * h / (2.0 * (a - b))) / L;
+      fold.before_lambda = lambda;
+      fold.after_lambda = zc(m) / L;
+      fold.before_state = x;
+      fold.after_state = state_of(zc);
+      out.fold_points.push_back(std::move(fold));
+    }
 
     previous_z = z;
     previous_lambda = lambda;

@@ -40,6 +40,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace railstab {
 
@@ -106,6 +107,18 @@ struct ArclengthResult {
   Eigen::VectorXd furthest_state;
   int steps = 0;                 // accepted predictor-corrector steps
   int folds = 0;                 // sign changes of dlambda/ds
+  // Each fold passed, in order: where dlambda/ds changes sign between two
+  // converged points. With a = dLambda/ds at the point before, b < 0 (or
+  // > 0) at the point after and h = |z_after - z_before| the chord between
+  // them, Lambda(s) taken as the quadratic with those end slopes puts the
+  // fold at Lambda_before + a^2 h / (2 (a - b)): its error is O(h^3), so a
+  // short max_step locates the fold closely (stability/steady_state_fold.hpp).
+  struct Fold {
+    double lambda = 0.0;           // interpolated
+    double before_lambda = 0.0, after_lambda = 0.0;
+    Eigen::VectorXd before_state, after_state;
+  };
+  std::vector<Fold> fold_points;
   std::string stop_reason;       // from options.stop
   std::string failure;           // why it stopped otherwise (not reached)
 };

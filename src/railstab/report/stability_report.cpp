@@ -129,8 +129,15 @@ std::vector<PlottedTrack> write_track_blocks(std::ostream& out, const CriticalSp
     t.hunting = !hunting_name.empty() && t.name == hunting_name;
     if (t.hunting) {
       std::ostringstream tag;
-      if (r.critical_speed_found || r.unstable_at_start)
-        tag << "[critical mode]";
+      if (r.critical_speed_found || r.unstable_at_start) {
+        tag << "[critical mode";
+        if (r.at_critical.least_stable >= 0) {
+          const std::string here =
+              shape_here_if_different(r.at_critical.modes[size_t(r.at_critical.least_stable)]);
+          if (!here.empty()) tag << ", " << here << " at V_c";
+        }
+        tag << "]";
+      }
       else
         tag << "[least damped at " << r.grid.back().speed_m_per_s << " m/s]";
       t.tag = tag.str();
@@ -490,13 +497,16 @@ void write_json(std::ostream& out, const Model& model, const CriticalSpeedResult
     if (r.equilibrium_lost_at_m_per_s > 0.0)
       j.field("equilibrium_lost_at_m_per_s", r.equilibrium_lost_at_m_per_s)
           .field("equilibrium_error", r.equilibrium_error);
+    if (r.steady_state_fold_m_per_s > 0.0)
+      j.field("steady_state_fold_m_per_s", r.steady_state_fold_m_per_s);
     if (r.critical_speed_found) {
       const ModeReport& m = r.at_critical.modes[r.at_critical.least_stable];
       j.field("critical_speed_m_per_s", r.critical_speed_m_per_s)
           .field("critical_speed_tolerance_m_per_s", r.speed_tolerance_m_per_s)
           .field("hunting_frequency_Hz", m.frequency_hz)
           .field("hunting_damping_ratio", m.damping_ratio)
-          .field("hunting_mode", m.name);
+          .field("hunting_mode", m.name)
+          .field("hunting_mode_shape_here", m.shape_name);
       j.key("loss_of_stability").begin_object();
       j.field("kind", loss_of_stability_key(r.loss.kind))
           .field("description", describe_loss_of_stability(r.loss))
@@ -507,6 +517,10 @@ void write_json(std::ostream& out, const Model& model, const CriticalSpeedResult
           .field("steady_state_largest_translation_change_m", r.loss.largest_translation_change_m)
           .field("steady_state_grid_translation_change_m", r.loss.grid_translation_change_m)
           .field("steady_state_continuous", r.loss.steady_state_continuous);
+      if (r.loss.kind == LossOfStabilityKind::fold)
+        j.field("fold_speed_m_per_s", r.loss.fold_speed_m_per_s)
+            .field("fold_speed_coarse_m_per_s", r.loss.fold_coarse_speed_m_per_s)
+            .field("fold_smooth", r.loss.fold_smooth);
       j.end_object();
       write_hopf_json(j, hopf);
       const std::vector<ModeShape>& shapes = r.shapes_at_critical;
@@ -535,7 +549,7 @@ void write_json(std::ostream& out, const Model& model, const CriticalSpeedResult
       }
       j.end_array();
     } else {
-      j.key("critical_speed_m_per_s").null().key("hunting_frequency_Hz").null().key("hunting_mode").null();
+      j.key("critical_speed_m_per_s").null().key("hunting_frequency_Hz").null().key("hunting_mode").null().key("hunting_mode_shape_here").null();
       write_hopf_json(j, hopf);
     }
     j.field("states", int(r.grid.empty() ? 0 : r.grid.front().linear.states()))
@@ -648,7 +662,7 @@ void write_markdown(std::ostream& md_out, const Model& model, const CriticalSpee
          << " m |\n"
          << "| damping ratio at " << r.at_critical.speed_m_per_s << " m/s | " << m.damping_ratio
          << " |\n"
-         << "| mode | " << md_text(m.name) << " |\n"
+         << "| mode | " << md_text(mode_label_here(m)) << " |\n"
          << "| loss of stability | " << md_text(describe_loss_of_stability(r.loss)) << " |\n";
       if (hopf) md << "| Hopf bifurcation | " << md_text(describe_hopf(*hopf)) << " |\n";
       md << "\n";
@@ -761,7 +775,7 @@ void print_critical_speed_summary(std::ostream& out, const Model& model,
     out << model.name << ": critical speed " << std::fixed << std::setprecision(2)
         << r.critical_speed_m_per_s << " m/s (" << r.critical_speed_m_per_s * 3.6 << " km/h)"
         << std::defaultfloat << std::setprecision(5) << ", frequency " << m.frequency_hz
-        << " Hz, mode " << m.name << "\n";
+        << " Hz, mode " << mode_label_here(m) << "\n";
     if (r.loss.kind != LossOfStabilityKind::oscillatory_crossing)
       out << "loss of stability: " << describe_loss_of_stability(r.loss) << "\n";
     if (hopf) out << "Hopf bifurcation: " << describe_hopf(*hopf) << "\n";

@@ -1,9 +1,11 @@
 #include <railstab/stability/loss_of_stability.hpp>
 
 #include <railstab/core/coordinates.hpp>
+#include <railstab/eigen/eigen_analysis.hpp>
 #include <railstab/stability/speed_analysis.hpp>
 
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 
 namespace railstab {
@@ -13,6 +15,7 @@ std::string loss_of_stability_key(LossOfStabilityKind kind) {
     case LossOfStabilityKind::oscillatory_crossing: return "oscillatory_crossing";
     case LossOfStabilityKind::aperiodic_crossing: return "aperiodic_crossing";
     case LossOfStabilityKind::jump: return "jump";
+    case LossOfStabilityKind::fold: return "fold";
     case LossOfStabilityKind::undetermined: return "undetermined";
   }
   return "undetermined";
@@ -82,6 +85,56 @@ LossOfStability classify_loss_of_stability(const Model& model, const StabilityPo
   return out;
 }
 
+LossOfStability fold_loss_of_stability(const StabilityPoint& before, const StabilityPoint& after,
+                                       const SteadyStateFold& fold) {
+  LossOfStability out;
+  out.kind = LossOfStabilityKind::fold;
+  out.stable_speed_m_per_s = before.speed_m_per_s;
+  out.unstable_speed_m_per_s = after.speed_m_per_s;
+  out.stable_max_real_part_per_s = before.max_real_part;
+  out.unstable_max_real_part_per_s = after.max_real_part;
+  out.grid_real_part_difference_per_s = after.max_real_part - before.max_real_part;
+  if (after.least_stable >= 0) {
+    const ModeReport& m = after.modes[size_t(after.least_stable)];
+    out.unstable_mode = m.name;
+    out.unstable_eigenvalue = m.eigenvalue;
+  }
+  out.fold_speed_m_per_s = fold.speed_m_per_s;
+  out.fold_coarse_speed_m_per_s = fold.coarse_speed_m_per_s;
+  // Smooth (a saddle-node) where the unstable mode past the fold is, below
+  // it, a real eigenvalue on its way to zero: the mode matched to it by
+  // eigenvector continuity is real and negative, within a factor
+  // kSmoothFoldRatio of its value past the fold (both scale as
+  // sqrt(|V - V_fold|) and the two points lie about as far from the fold).
+  // Otherwise the branch turns at a corner, where the Jacobian jumps.
+  out.fold_smooth = false;
+  if (after.least_stable >= 0) {
+    // The stable side's mode most like it (largest MAC; match_modes pairs
+    // oscillatory modes only, and this one is real).
+    const Eigen::VectorXcd& v = after.modes[size_t(after.least_stable)].vector;
+    int j = -1;
+    double best = 0.0;
+    for (size_t k = 0; k < before.modes.size(); ++k) {
+      const ModeReport& m = before.modes[k];
+      if (m.neutral || m.eigenvalue.imag() < 0.0 || m.vector.size() != v.size()) continue;
+      const double mac = modal_assurance(v, m.vector);
+      if (mac > best) {
+        best = mac;
+        j = int(k);
+      }
+    }
+    if (j >= 0) {
+      const std::complex<double> b = before.modes[size_t(j)].eigenvalue;
+      const double a = out.unstable_eigenvalue.real();
+      out.fold_stable_side_eigenvalue = b;
+      out.fold_smooth = b.imag() == 0.0 && b.real() < 0.0 && a > 0.0 &&
+                        -b.real() <= LossOfStability::kSmoothFoldRatio * a &&
+                        a <= LossOfStability::kSmoothFoldRatio * -b.real();
+    }
+  }
+  return out;
+}
+
 std::string describe_loss_of_stability(const LossOfStability& loss) {
   std::ostringstream s;
   s.precision(4);
@@ -113,6 +166,30 @@ std::string describe_loss_of_stability(const LossOfStability& loss) {
       if (loss.unstable_side_from_pseudo_transient)
         s << "; above, the steady state followed from below could not be continued and "
              "another one was found by pseudo-transient continuation";
+      break;
+    case LossOfStabilityKind::fold:
+      s.precision(6);
+      s << "the steady state's branch folds back in speed at " << loss.fold_speed_m_per_s
+        << " m/s: above it no steady state near the one followed from below exists. Past the fold the branch returns to lower speeds as unstable "
+           "steady states (at "
+        << loss.unstable_speed_m_per_s << " m/s the largest real part is ";
+      s.precision(4);
+      s << loss.unstable_max_real_part_per_s << " 1/s: " << loss.unstable_mode;
+      if (loss.unstable_eigenvalue.imag() == 0.0) s << ", real eigenvalue";
+      s << "; below the fold, at " << std::setprecision(6) << loss.stable_speed_m_per_s
+        << " m/s, " << std::setprecision(4) << loss.stable_max_real_part_per_s << " 1/s). ";
+      if (loss.fold_smooth)
+        s << "A smooth fold: that mode's real eigenvalue is " << loss.fold_stable_side_eigenvalue.real()
+          << " 1/s just below it.";
+      else
+        s << "Not a smooth fold: the branch turns at a corner, where the Jacobian jumps (a "
+             "contact point appears or switches): just below it the same mode has the "
+             "eigenvalue "
+          << loss.fold_stable_side_eigenvalue.real() << (loss.fold_stable_side_eigenvalue.imag() < 0 ? " - " : " + ")
+          << std::abs(loss.fold_stable_side_eigenvalue.imag())
+          << "i 1/s, so no eigenvalue passes through zero.";
+      s << " Located to " << std::abs(loss.fold_speed_m_per_s - loss.fold_coarse_speed_m_per_s)
+        << " m/s (the last two refinements of the continuation)";
       break;
     case LossOfStabilityKind::undetermined:
       s << "not judged (the bisection did not narrow the bracket)";

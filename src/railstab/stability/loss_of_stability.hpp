@@ -35,9 +35,25 @@
 //    stable mode at the critical speed oscillates (Im > 0).
 //  - aperiodic_crossing (divergence, or the fold of a steady state): a real
 //    eigenvalue crosses zero continuously.
+//  - fold: the speed grid found no steady state at its next speed, and the
+//    branch followed from below, continued by arclength, folds back in
+//    speed before it (stability/steady_state_fold.hpp): a saddle-node, the
+//    real eigenvalue of the fold mode reaches zero at the fold speed and is
+//    positive on the branch's unstable continuation past it. Stable up to
+//    the fold, the steady state is lost there; the sides are the
+//    continuation's points next to the fold (stable_speed_m_per_s on the
+//    branch from below, unstable_speed_m_per_s past the fold, at a lower
+//    speed) and the unstable side's least stable mode names the mode. The
+//    fold is smooth (a saddle-node) when that mode, matched by eigenvector
+//    continuity to the stable side, is there a real negative eigenvalue of
+//    comparable size (both go as sqrt(|V - V_fold|)); otherwise the branch
+//    turns at a corner where the Jacobian jumps (on S1002 the shipped curve
+//    cases' folds are such corners: a complex pair on one side, a real
+//    positive eigenvalue on the other).
 //  - undetermined: the bracket did not shrink (a bisection midpoint without a
 //    steady state stopped it), so continuity cannot be judged.
 #include <railstab/model/model.hpp>
+#include <railstab/stability/steady_state_fold.hpp>
 
 #include <complex>
 #include <string>
@@ -46,7 +62,7 @@ namespace railstab {
 
 struct StabilityPoint;  // stability/speed_analysis.hpp (which holds a LossOfStability)
 
-enum class LossOfStabilityKind { oscillatory_crossing, aperiodic_crossing, jump, undetermined };
+enum class LossOfStabilityKind { oscillatory_crossing, aperiodic_crossing, jump, fold, undetermined };
 
 // "oscillatory_crossing", ... (JSON keys).
 std::string loss_of_stability_key(LossOfStabilityKind kind);
@@ -75,6 +91,15 @@ struct LossOfStability {
   // fallback, not from continuation in speed: the branch followed from below
   // could not be continued.
   bool unstable_side_from_pseudo_transient = false;
+  // fold: where the branch turns (m/s), and the first, coarser
+  // continuation's value (their difference shows how well it is located).
+  double fold_speed_m_per_s = 0.0, fold_coarse_speed_m_per_s = 0.0;
+  // fold: a smooth fold (saddle-node: the unstable mode's eigenvalue passes
+  // through zero), or a corner of the branch where the Jacobian jumps; and
+  // that mode's eigenvalue just below the fold (fold_loss_of_stability).
+  static constexpr double kSmoothFoldRatio = 10.0;
+  bool fold_smooth = false;
+  std::complex<double> fold_stable_side_eigenvalue;
 };
 
 // grid_stable/grid_unstable: the grid bracket; stable/unstable: the final
@@ -86,6 +111,11 @@ LossOfStability classify_loss_of_stability(const Model& model, const StabilityPo
                                            const StabilityPoint& stable,
                                            const StabilityPoint& unstable,
                                            const StabilityPoint& at_critical);
+
+// The fold's classification from its two sides, evaluated at the
+// continuation's points (kind fold).
+LossOfStability fold_loss_of_stability(const StabilityPoint& before, const StabilityPoint& after,
+                                       const SteadyStateFold& fold);
 
 // One sentence for reports, e.g. "a jump of the steady state between 47.49
 // and 47.5 m/s: no eigenvalue crosses (largest real part -0.0257 1/s below,

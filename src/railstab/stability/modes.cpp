@@ -202,4 +202,14 @@ int least_stable_lateral_mode(const std::vector<ModeReport>& modes, double max_f
   });
 }
 
+std::string shape_here_if_different(const ModeReport& m) {
+  if (m.shape_name.empty() || m.name.rfind(m.shape_name, 0) == 0) return "";
+  return m.shape_name;
+}
+
+std::string mode_label_here(const ModeReport& m) {
+  const std::string here = shape_here_if_different(m);
+  return here.empty() ? m.name : m.name + " (its shape here: " + here + ")";
+}
+
 }  // namespace railstab

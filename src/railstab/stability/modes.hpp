@@ -43,6 +43,17 @@ struct ModeReport {
   Eigen::VectorXcd vector;  // eigenvector on the linear model's kept states
 };
 
+// A tracked mode's name is its track's (the shape it has at most speeds of
+// the sweep, stability/speed_analysis.hpp name_tracked_modes); a mode that
+// changes shape along the speed range (the coach in cases/
+// coach_s1002_curve.toml: its car-body upper sway becomes a wheelset spin
+// mode where it crosses) is, at one speed, what its shape_name says. This is
+// that shape name where it differs from the track's name (which does not
+// start with it), else "".
+std::string shape_here_if_different(const ModeReport& m);
+// m.name, followed by "(its shape here: <shape>)" where they differ.
+std::string mode_label_here(const ModeReport& m);
+
 // Kinetic-energy participation: share_k ~ M_k |v_rate_k|^2 with M_k the mass
 // (translations) or the principal inertia (rotations) of that coordinate.
 // Names from the shapes, unique among `pairs` (suffixes in ascending damping

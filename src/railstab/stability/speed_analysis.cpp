@@ -4,16 +4,19 @@
 #include <railstab/eigen/band_eigen.hpp>
 #include <railstab/equilibrium/speed_continuation.hpp>
 #include <railstab/linear/jacobian.hpp>
+#include <railstab/model/equations_of_motion.hpp>
 #include <railstab/setup/model_error_context.hpp>
 
 #include <railstab/stability/mode_names.hpp>
 #include <railstab/stability/point_mode_shapes.hpp>
+#include <railstab/stability/steady_state_fold.hpp>
 
 #include <algorithm>
 #include <map>
 #include <chrono>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -101,7 +104,18 @@ EquilibriumResult SpeedStability::steady_state_at(double speed_m_per_s) {
                            rescaled_to_speed(model_, last_equilibrium_, last_speed_, speed_m_per_s), settle);
 }
 
-StabilityPoint SpeedStability::at(double speed_m_per_s) {
+StabilityPoint SpeedStability::at(double speed_m_per_s) { return covering(speed_m_per_s, nullptr); }
+
+StabilityPoint SpeedStability::at_steady_state(double speed_m_per_s, const Eigen::VectorXd& state) {
+  return covering(speed_m_per_s, &state);
+}
+
+void SpeedStability::restart_from(const Eigen::VectorXd& state, double speed_m_per_s) {
+  last_equilibrium_ = state;
+  last_speed_ = speed_m_per_s;
+}
+
+StabilityPoint SpeedStability::covering(double speed_m_per_s, const Eigen::VectorXd* given_state) {
   const bool sparse =
       resolved_solver(options_.solver, model_.state_size()) == EigenSolverKind::sparse;
   return evaluate(speed_m_per_s, sparse, [&](StabilityPoint& p) {
@@ -121,7 +135,7 @@ StabilityPoint SpeedStability::at(double speed_m_per_s) {
       p.eigen_warning = w.str();
     }
     return describe_modes(model_, p.linear, band.pairs, p.speed_m_per_s);
-  });
+  }, given_state);
 }
 
 void SpeedStability::plan_band_solve_from(const StabilityPoint& near) {
@@ -146,7 +160,7 @@ StabilityPoint SpeedStability::tracking(double speed_m_per_s, std::complex<doubl
 
 template <class Eigen_>
 StabilityPoint SpeedStability::evaluate(double speed_m_per_s, bool sparse,
-                                        Eigen_&& eigen_analysis) {
+                                        Eigen_&& eigen_analysis, const Eigen::VectorXd* given_state) {
   const auto start = std::chrono::steady_clock::now();
   const Model& model = model_;
   StabilityPoint p;
@@ -155,8 +169,18 @@ StabilityPoint SpeedStability::evaluate(double speed_m_per_s, bool sparse,
   // Each stage names itself, the speed and the place in its errors
   // (setup/model_error_context.hpp).
   const double t = options_.time_s;
-  p.equilibrium = with_model_context(model, {"steady state", speed_m_per_s, t},
-                                     [&] { return steady_state_at(speed_m_per_s); });
+  if (given_state) {
+    p.equilibrium.state = *given_state;
+    const Eigen::VectorXd f = rhs(model, speed_m_per_s, t, *given_state);
+    for (int k = model.n_coordinates; k < model.state_size(); ++k)
+      if (std::abs(f(k)) > p.equilibrium.max_acceleration) {
+        p.equilibrium.max_acceleration = std::abs(f(k));
+        p.equilibrium.worst_state = model.state_name(k);
+      }
+  } else {
+    p.equilibrium = with_model_context(model, {"steady state", speed_m_per_s, t},
+                                       [&] { return steady_state_at(speed_m_per_s); });
+  }
   last_equilibrium_ = p.equilibrium.state;
   last_speed_ = speed_m_per_s;
   LinearizationOptions lin_opt;
@@ -382,6 +406,7 @@ CriticalSpeedResult find_critical_speed(const Model& model, const Eigen::VectorX
   const int n_grid = int(std::ceil((options.to_m_per_s - options.from_m_per_s) /
                                    options.grid_step_m_per_s - 1e-9));
   int crossing = -1;
+  std::optional<SteadyStateFold> fold;
   for (int i = 0; i <= n_grid; ++i) {
     const double v =
         std::min(options.to_m_per_s, options.from_m_per_s + i * options.grid_step_m_per_s);
@@ -389,9 +414,47 @@ CriticalSpeedResult find_critical_speed(const Model& model, const Eigen::VectorX
       r.grid.push_back(stability.at(v));
       release_state_matrix(r.grid.back());
     } catch (const std::runtime_error& e) {
+      // Follow the branch by arclength from the last point: it goes on
+      // (resume the grid on it) or folds back (the sweep ends there).
+      std::string why = e.what();
+      if (!r.grid.empty()) {
+        const StabilityPoint& last = r.grid.back();
+        if (options.progress) {
+          std::ostringstream s;
+          s << "  no steady state at " << v
+            << " m/s by continuation in speed: following the branch by arclength";
+          options.progress(s.str());
+        }
+        LostSteadyState lost = continue_past_lost_steady_state(
+            model, last.equilibrium.state, last.speed_m_per_s, v, options.stability.time_s);
+        if (!lost.fold && lost.reached) {
+          stability.restart_from(lost.at_target.state, v);
+          try {
+            r.grid.push_back(stability.at(v));
+            release_state_matrix(r.grid.back());
+            report(r.grid.back());
+            if (crossing < 0 && r.grid.back().max_real_part > 0.0) crossing = i;
+            continue;
+          } catch (const std::runtime_error& again) {
+            why = again.what();
+          }
+        } else if (lost.fold) {
+          fold = std::move(lost.fold);
+          std::ostringstream s;
+          s.precision(6);
+          s << "the steady state's branch folds back at " << fold->speed_m_per_s
+            << " m/s: beyond it no steady state near the one followed from below exists ("
+            << why << ")";
+          why = s.str();
+        } else {
+          std::ostringstream s;
+          s << "; arclength continuation from " << last.speed_m_per_s << " m/s: " << lost.failure;
+          why += s.str();
+        }
+      }
       r.equilibrium_lost_at_m_per_s = v;
-      r.equilibrium_error = e.what();
-      if (options.progress) options.progress(std::string("  stopped: ") + e.what());
+      r.equilibrium_error = why;
+      if (options.progress) options.progress("  stopped: " + why);
       break;
     }
     report(r.grid.back());
@@ -408,7 +471,45 @@ CriticalSpeedResult find_critical_speed(const Model& model, const Eigen::VectorX
     r.partial = true;
     r.partial_reason = why.str();
   }
-  if (crossing < 0) {
+  if (fold) r.steady_state_fold_m_per_s = fold->speed_m_per_s;
+  bool lost_at_fold = false;
+  if (crossing < 0 && fold) {
+    // Stable at the last grid speed: the branch may still lose stability
+    // before its fold (an eigenvalue crossing on the way: the point next to
+    // the fold, on the branch from below, joins the grid as its last point
+    // and the bisection finds the crossing as anywhere else); otherwise it
+    // is lost at the fold itself (saddle-node: the fold mode's real
+    // eigenvalue through zero). The two sides are the continuation's points:
+    // Newton cannot polish them, its basin shrinks to nothing at the fold.
+    SpeedStability sides(model, fold->before_state, fold->before_speed_m_per_s, options.stability);
+    if (!r.grid.empty()) sides.plan_band_solve_from(r.grid.back());
+    StabilityPoint before = sides.at_steady_state(fold->before_speed_m_per_s, fold->before_state);
+    release_state_matrix(before);
+    report(before);
+    if (before.max_real_part > 0.0) {
+      r.grid.push_back(std::move(before));
+      crossing = int(r.grid.size()) - 1;
+    } else {
+      StabilityPoint after = sides.at_steady_state(fold->after_speed_m_per_s, fold->after_state);
+      release_state_matrix(after);
+      report(after);
+      lost_at_fold = true;
+      r.stable_in_range = false;
+      r.critical_speed_found = true;
+      r.critical_speed_m_per_s = fold->speed_m_per_s;
+      r.speed_tolerance_m_per_s = std::max(
+          options.tolerance_m_per_s, std::abs(fold->speed_m_per_s - fold->coarse_speed_m_per_s));
+      r.loss = fold_loss_of_stability(before, after, *fold);
+      // The mode that reaches zero is the one unstable past the fold (on
+      // the stable side it need not be the least stable: its eigenvalue
+      // grows as sqrt(V_fold - V)): the unstable side's modes are shown, as
+      // for a jump.
+      r.at_critical = std::move(after);
+    }
+  }
+  if (lost_at_fold) {
+    // decided above: the critical speed is the fold's
+  } else if (crossing < 0) {
     r.stable_in_range = r.equilibrium_lost_at_m_per_s == 0.0;
   } else if (crossing == 0) {
     r.stable_in_range = false;
@@ -454,7 +555,8 @@ CriticalSpeedResult find_critical_speed(const Model& model, const Eigen::VectorX
   r.mode_tracks = track_modes(r.grid);
   name_tracked_modes(r.grid, r.mode_tracks);
   if (r.critical_speed_found || r.unstable_at_start) inherit_mode_names(r.at_critical, r.grid);
-  if (r.loss.kind == LossOfStabilityKind::jump && r.at_critical.least_stable >= 0)
+  if ((r.loss.kind == LossOfStabilityKind::jump || r.loss.kind == LossOfStabilityKind::fold) &&
+      r.at_critical.least_stable >= 0)
     r.loss.unstable_mode = r.at_critical.modes[size_t(r.at_critical.least_stable)].name;
   if (r.damping_limit_found || r.damping_below_at_start)
     inherit_mode_names(r.at_damping_limit, r.grid);

@@ -114,10 +114,19 @@ class SpeedStability {
   // its shifts from nothing: guesses only, coverage is still proven. No
   // effect when `near` has no discs (dense, tracked).
   void plan_band_solve_from(const StabilityPoint& near);
+  // As at(), at a steady state found elsewhere (a continuation's point, e.g.
+  // next to a fold, where Newton's basin is too narrow to polish it): no
+  // solve, the state is linearised as given (equilibrium.max_acceleration
+  // says how well it solves the equations).
+  StabilityPoint at_steady_state(double speed_m_per_s, const Eigen::VectorXd& state);
+  // The next at() continues from this steady state instead of the last one.
+  void restart_from(const Eigen::VectorXd& state, double speed_m_per_s);
 
  private:
   template <class Eigen_>
-  StabilityPoint evaluate(double speed_m_per_s, bool sparse, Eigen_&& eigen_analysis);
+  StabilityPoint evaluate(double speed_m_per_s, bool sparse, Eigen_&& eigen_analysis,
+                          const Eigen::VectorXd* given_state = nullptr);
+  StabilityPoint covering(double speed_m_per_s, const Eigen::VectorXd* given_state);
   EquilibriumResult steady_state_at(double speed_m_per_s);
   const Model& model_;
   StabilityOptions options_;
@@ -175,6 +184,9 @@ struct CriticalSpeedResult {
   // deficiency the flangeless contact cannot carry); the analysis covers
   // the speeds below it.
   double equilibrium_lost_at_m_per_s = 0.0;  // 0: never lost
+  // Where the lost steady state's branch folds back in speed
+  // (stability/steady_state_fold.hpp); 0: no fold found.
+  double steady_state_fold_m_per_s = 0.0;
   std::string equilibrium_error;
   // The run could not finish what it was asked (the grid stopped below the
   // top speed, or a bisection midpoint had no steady state): what was found

@@ -34,6 +34,13 @@ std::string verdict_sentence(const CriticalSpeedResult& r) {
         << " m/s";
       if (r.loss.kind == LossOfStabilityKind::jump)
         s << " (stability lost by a jump of the steady state, no eigenvalue crosses)";
+      else if (r.loss.kind == LossOfStabilityKind::fold)
+        s << (r.loss.fold_smooth ? " (the steady state's branch folds back: a real eigenvalue "
+                                   "reaches zero, and no steady state near the one followed "
+                                   "exists above it)"
+                                 : " (the steady state's branch turns back at a corner, where "
+                                   "the Jacobian jumps: no steady state near the one followed "
+                                   "exists above it, and no eigenvalue crosses)");
       else if (r.loss.kind == LossOfStabilityKind::aperiodic_crossing)
         s << " (a real eigenvalue crosses zero: divergence or the fold of the steady state)";
       break;
