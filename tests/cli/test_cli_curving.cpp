@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "cli/run_cli.hpp"
+#include "io/format_checks.hpp"
 #include "support/test_files.hpp"
 
 #include <algorithm>
@@ -114,4 +115,31 @@ TEST(CliCurving, BadFlagValuesNameTheFlagAndWriteNothing) {
       EXPECT_NE(run.output.find(s), std::string::npos) << shown.str() << ": " << run.output;
     EXPECT_FALSE(fs::exists(dir / "out")) << shown.str();
   }
+}
+
+// Issue 24, item 1: `critical-speed` on the coach in its curve said "no
+// steady state from 57.5 m/s". Its outputs now say where the branch folds
+// and what loses stability below the fold (the wheelset2 spin mode, named
+// by its shape there beside its track's name), the same in the JSON, the
+// Markdown and the terminal (library checks: tests/stability/
+// test_steady_state_fold.cpp). 1.5 s.
+TEST(CliCurving, CriticalSpeedNamesTheFoldAndTheSpinModeShape) {
+  const fs::path dir = test::fresh_dir("cli_curving", "fold");
+  const test::CliRun run = test::run_railstab({"critical-speed", test::case_path("coach_s1002_curve"),
+                                               "--from", "50", "--to", "60", "--no-plots", "--out",
+                                               "out"},
+                                              dir);
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_NE(run.output.find("critical speed 56.72 m/s"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("(its shape here: wheelset2 spin"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("the steady state's branch folds back at 56.7"), std::string::npos)
+      << run.output;
+  const std::string json = test::read_text(dir / "out/coach_s1002_curve_arc2000m_critical_speed.json");
+  EXPECT_TRUE(test::is_valid_json(json));
+  EXPECT_NE(json.find("\"steady_state_fold_m_per_s\": 56.7"), std::string::npos);
+  EXPECT_NE(json.find("\"hunting_mode_shape_here\": \"wheelset2 spin"), std::string::npos);
+  EXPECT_NE(json.find("\"kind\": \"oscillatory_crossing\""), std::string::npos);
+  const std::string md = test::read_text(dir / "out/coach_s1002_curve_arc2000m_critical_speed.md");
+  EXPECT_NE(md.find("its shape here: wheelset2 spin"), std::string::npos);
+  fs::remove_all(dir);
 }
