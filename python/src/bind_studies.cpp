@@ -15,6 +15,7 @@
 #include <railstab/scene_reading/scene_error.hpp>
 #include <railstab/io/file_names.hpp>
 #include <railstab/nonlinear/bifurcation_analysis.hpp>
+#include <railstab/nonlinear/hopf_assessment.hpp>
 #include <railstab/report/bifurcation_report.hpp>
 #include <railstab/report/contact_geometry_report.hpp>
 #include <railstab/report/model_check_report.hpp>
@@ -189,8 +190,6 @@ py::dict bifurcation(const std::string& scene, const std::vector<std::string>& s
         << " and to " << to << " m/s";
     throw std::invalid_argument(msg.str());
   }
-  if (!o.from_hopf && !(o.cycle_speed_m_per_s > 0.0))
-    throw std::invalid_argument("hopf_branch=False leaves no branch to compute: give cycle_speed as well");
   o.linear.stability.solver = solver_named(solver);
   o.linear.stability.max_frequency_hz = hunting_band;
   o.continuation.max_orbits = max_orbits;
@@ -203,11 +202,16 @@ py::dict bifurcation(const std::string& scene, const std::vector<std::string>& s
     py::gil_scoped_release no_gil;
     const PreparedScene s = prepare_scene(scene, overrides);
     warnings = model_warnings(s);
+    // Without a cycle speed only profile contact starts a time-domain
+    // branch by default (analyse_bifurcation).
+    if (!o.from_hopf && !(o.cycle_speed_m_per_s > 0.0) && !has_profile_contact(s.model))
+      throw std::invalid_argument(
+          "hopf_branch=False leaves no branch to compute: give cycle_speed as well (the default "
+          "time-domain start is for profile contact, and the scene has none)");
     const BifurcationResult r = analyse_bifurcation(s.model, s.equilibrium.state, s.speed_m_per_s, o);
     BifurcationRunInfo info;
     info.eigen_solver = solver;
     info.hunting_band_hz = hunting_band;
-    info.cycle_speed_m_per_s = o.cycle_speed_m_per_s;
     files = write_and_read([&](OutputSet& outputs) {
       write_bifurcation_results(s.model, r, info, outputs, steady_state_file_stem(scene, s.model), false);
     });

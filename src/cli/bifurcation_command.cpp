@@ -5,6 +5,7 @@
 #include <railstab/io/gnuplot.hpp>
 #include <railstab/io/output_set.hpp>
 #include <railstab/nonlinear/bifurcation_analysis.hpp>
+#include <railstab/nonlinear/hopf_assessment.hpp>
 #include <railstab/report/bifurcation_report.hpp>
 #include <railstab/report/run_conditions.hpp>
 
@@ -34,11 +35,18 @@ void run_bifurcation(const BifurcationArgs& a) {
         << o.linear.from_m_per_s << " and --to " << o.linear.to_m_per_s << " m/s";
     throw std::invalid_argument(msg.str());
   }
-  if (!o.from_hopf && !(o.cycle_speed_m_per_s > 0.0))
+  if (!o.from_hopf && !(o.cycle_speed_m_per_s > 0.0) && !o.default_cycle_start)
     throw std::invalid_argument(
-        "--no-hopf-branch leaves no branch to compute: give --cycle-speed V as well");
+        "--no-hopf-branch with --no-cycle-branch leaves no branch to compute");
   if (a.plots) require_gnuplot();  // before the orbits, not after them
   const PreparedScene s = prepare_command_scene(a);
+  // Without a cycle speed only profile contact starts a time-domain branch
+  // by default (analyse_bifurcation).
+  if (!o.from_hopf && !(o.cycle_speed_m_per_s > 0.0) && !has_profile_contact(s.model))
+    throw std::invalid_argument(
+        "--no-hopf-branch leaves no branch to compute: give --cycle-speed V as well (the "
+        "default time-domain start is for profile contact, and " + a.scene +
+        " has none)");
   o.linear.stability.solver = eigen_solver_from_name(a.solver);
   o.linear.stability.max_frequency_hz = a.hunting_band_hz;
   o.continuation.max_orbits = a.max_orbits;
@@ -50,7 +58,6 @@ void run_bifurcation(const BifurcationArgs& a) {
   BifurcationRunInfo info;
   info.eigen_solver = a.solver;
   info.hunting_band_hz = a.hunting_band_hz;
-  info.cycle_speed_m_per_s = o.cycle_speed_m_per_s;
   OutputSet outputs(a.out_dir);
   write_bifurcation_results(s.model, r, info, outputs, steady_state_file_stem(a.scene, s.model), a.plots);
   const std::vector<std::string> written = outputs.commit();
@@ -92,10 +99,14 @@ void register_bifurcation_command(CLI::App& app) {
       ->check(finite_in(flag_ranges::speed_step_m_per_s));
   cmd->add_option("--cycle-speed", a->options.cycle_speed_m_per_s,
                   "also start a branch from the cycle a time-domain run settles on at this speed "
-                  "(m/s; from the steady state with the leading wheelset displaced 5 mm, 6 s)")
+                  "(m/s; from the steady state with the leading wheelset displaced 5 mm, 6 s); "
+                  "on profile contact the default is 1.03 x the linear critical speed")
       ->check(finite_in(flag_ranges::speed_m_per_s));
+  cmd->add_flag("--no-cycle-branch", [a](std::int64_t) { a->options.default_cycle_start = false; },
+               "on profile contact without --cycle-speed, do not start the default time-domain "
+               "branch (from the cycle a run at 1.03 x the linear critical speed settles on)");
   cmd->add_flag("--no-hopf-branch", [a](std::int64_t) { a->options.from_hopf = false; },
-               "do not start a branch at the Hopf point (only the --cycle-speed branch): on a "
+               "do not start a branch at the Hopf point (only the time-domain branch): on a "
                "profile contact the orbits near the Hopf point are micrometres in size and "
                "costly; the hunting that matters starts from a cycle");
   cmd->add_option("--max-amplitude", a->options.max_amplitude_m,

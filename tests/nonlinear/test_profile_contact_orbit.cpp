@@ -15,6 +15,7 @@
 
 #include <railstab/equilibrium/speed_continuation.hpp>
 #include <railstab/integrate/integrator.hpp>
+#include <railstab/nonlinear/bifurcation_analysis.hpp>
 #include <railstab/nonlinear/model_orbits.hpp>
 #include <railstab/nonlinear/periodic_orbit.hpp>
 #include <railstab/setup/prepare_scene.hpp>
@@ -73,4 +74,41 @@ TEST(ProfileContactOrbit, S1002BogieFlangeHuntingCycleIsATimeDomainSolution) {
   // 1e-6 of the amplitude, as issue 22 asks and the knife-edge vehicle's
   // test checks (measured 5e-8).
   EXPECT_LT((back - o.start).cwiseAbs().maxCoeff(), 1e-6 * scale);
+}
+
+// `bifurcation` without a cycle speed on profile contact starts the
+// time-domain branch at 1.03 V_c (BifurcationOptions::default_cycle_start):
+// on the thesis bogie (V_c 39.80 m/s) at 40.99 m/s, where a plain run from a
+// 5 mm displacement settles on the flange-hunting cycle of docs/nonlinear.md
+// (`railstab simulate cases/thesis_bogie_s1002_tangent.toml --speed 41
+// --offset wheelset1.y_m=0.005 --t-end 12`: 5.18 mm, period 0.478 s). The
+// branch's first orbit is that cycle: amplitude within 0.2 mm and period
+// within 2 % of the plain run's at 41 m/s (0.01 m/s away), stable. Two
+// orbits only; 20-60 s CPU.
+TEST(ProfileContactOrbit, S1002BogieDefaultCycleStartFindsTheFlangeHuntingCycle) {
+  const PreparedScene scene = prepare_scene(std::string(RAILSTAB_CASES_DIR) +
+                                                "/thesis_bogie_s1002_tangent.toml",
+                                            {});
+  BifurcationOptions o;
+  o.linear.from_m_per_s = 30.0;
+  o.linear.to_m_per_s = 45.0;
+  o.linear.grid_step_m_per_s = 2.5;
+  o.from_hopf = false;
+  o.max_amplitude_m = 0.008;
+  o.continuation.max_orbits = 2;
+  const BifurcationResult r =
+      analyse_bifurcation(scene.model, scene.equilibrium.state, scene.speed_m_per_s, o);
+  ASSERT_TRUE(r.linear.critical_speed_found);
+  EXPECT_TRUE(r.cycle_speed_default);
+  EXPECT_NEAR(r.cycle_speed_m_per_s, kDefaultCycleSpeedRatio * r.linear.critical_speed_m_per_s, 1e-9);
+  EXPECT_NEAR(r.cycle_speed_m_per_s, 40.99, 0.01);
+  ASSERT_EQ(r.branches.size(), 1u);
+  EXPECT_EQ(r.branches[0].origin, "time_domain");
+  ASSERT_TRUE(r.branches[0].error.empty()) << r.branches[0].error;
+  ASSERT_FALSE(r.branches[0].branch.orbits.empty());
+  const PeriodicOrbit& first = r.branches[0].branch.orbits.front();
+  EXPECT_NEAR(first.speed_m_per_s, r.cycle_speed_m_per_s, 1e-9);
+  EXPECT_NEAR(first.amplitude(r.coords.amplitude_state), 5.18e-3, 0.2e-3);
+  EXPECT_NEAR(first.period_s, 0.478, 0.02 * 0.478);
+  EXPECT_TRUE(first.stable);
 }

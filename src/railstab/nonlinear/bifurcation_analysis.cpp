@@ -4,6 +4,7 @@
 #include <railstab/integrate/integrator.hpp>
 #include <railstab/nonlinear/hopf_assessment.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <ctime>
 #include <iomanip>
@@ -67,7 +68,7 @@ BranchResult branch_from_time_domain(const Model& model, const FlowSystem& syste
                                      BifurcationResult& r, const BifurcationOptions& o) {
   BranchResult b;
   b.origin = "time_domain";
-  const double V = o.cycle_speed_m_per_s;
+  const double V = r.cycle_speed_m_per_s;
   try {
     const EquilibriumResult eq = continue_equilibrium_in_speed(model, speed, equilibrium, V, {});
     if (o.progress) {
@@ -271,8 +272,24 @@ BifurcationResult analyse_bifurcation(const Model& model, const Eigen::VectorXd&
                                               "point to start from"});
     }
   }
-  if (options.cycle_speed_m_per_s > 0.0) {
-    if (options.progress) options.progress("branch from a time-domain cycle");
+  r.cycle_speed_m_per_s = options.cycle_speed_m_per_s;
+  if (!(r.cycle_speed_m_per_s > 0.0) && r.profile_contact && options.default_cycle_start) {
+    const bool hopf = r.linear.critical_speed_found &&
+                      r.linear.loss.kind == LossOfStabilityKind::oscillatory_crossing;
+    if (hopf) {
+      r.cycle_speed_m_per_s =
+          std::min(options.linear.to_m_per_s, kDefaultCycleSpeedRatio * r.linear.critical_speed_m_per_s);
+      r.cycle_speed_default = true;
+    } else {
+      r.no_default_cycle_reason =
+          "no time-domain branch: the default start lies just above the linear critical speed "
+          "(an oscillatory crossing), and the range has none; give the cycle speed";
+    }
+  }
+  if (r.cycle_speed_m_per_s > 0.0) {
+    if (options.progress)
+      options.progress(std::string("branch from a time-domain cycle") +
+                       (r.cycle_speed_default ? " (default start on profile contact)" : ""));
     r.branches.push_back(branch_from_time_domain(model, system, equilibrium, speed_m_per_s, r, options));
   }
   r.nonlinear = nonlinear_critical_speed(r);

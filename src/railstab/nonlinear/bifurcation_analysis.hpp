@@ -24,6 +24,11 @@
 
 namespace railstab {
 
+// 1.03: on the thesis bogie on S1002/UIC60 (V_c 39.80 m/s) a run from 5 mm
+// at 41 m/s settles on the flange-hunting cycle whose branch folds at
+// 35.02 m/s; at 36 m/s (below V_c) the same start decays.
+inline constexpr double kDefaultCycleSpeedRatio = 1.03;
+
 struct BifurcationOptions {
   CriticalSpeedOptions linear;            // the linear search's range and grid
   ContinuationOptions continuation;       // speed range and amplitude limit set from the run
@@ -35,6 +40,13 @@ struct BifurcationOptions {
   // this speed, from the steady state with the wheelset displaced by
   // disturbance_m, after settle_time_s.
   double cycle_speed_m_per_s = 0.0;
+  // Profile contact without a cycle speed: start the time-domain branch at
+  // kDefaultCycleSpeedRatio x the linear critical speed (an oscillatory
+  // crossing; at most the top of the range). The Hopf start on a tabulated
+  // contact finds only micrometre cycles (docs/nonlinear.md), and the
+  // flange-hunting cycle that sets the nonlinear critical speed is reached
+  // from a disturbance where the steady state is unstable or nearly so.
+  bool default_cycle_start = true;
   double disturbance_m = 0.005;
   double settle_time_s = 6.0;
   double cycle_speed_step_m_per_s = -0.5;  // the second orbit's speed offset (direction)
@@ -103,6 +115,12 @@ struct BifurcationResult {
   std::vector<WheelsetOrbitStates> wheelsets;
   // The speed range and limits the branches ran with.
   double from_m_per_s = 0.0, to_m_per_s = 0.0, max_amplitude_m = 0.0;
+  // The time-domain branch's start speed (0: none), and whether it is the
+  // profile-contact default (BifurcationOptions::default_cycle_start) or
+  // was given; where the default could not apply, why (no branch then).
+  double cycle_speed_m_per_s = 0.0;
+  bool cycle_speed_default = false;
+  std::string no_default_cycle_reason;
   double cpu_seconds = 0.0;
 };
 

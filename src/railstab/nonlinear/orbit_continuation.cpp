@@ -138,6 +138,8 @@ OrbitBranch continue_branch(const FlowSystem& system, const OrbitCoordinates& co
   const int ia = coords.amplitude_state;
   const double sV = options.speed_scale_m_per_s, sa = options.amplitude_scale;
   OrbitBranch branch;
+  // The branch's CPU includes its first two orbits' (solved before this).
+  const double first_two_cpu = first_two[0].cpu_seconds + first_two[1].cpu_seconds;
   branch.orbits = std::move(first_two);
   if (options.progress)
     for (size_t k = 0; k < branch.orbits.size(); ++k) options.progress(int(k) + 1, branch.orbits[k]);
@@ -150,7 +152,7 @@ OrbitBranch continue_branch(const FlowSystem& system, const OrbitCoordinates& co
   double h = options.initial_step;
   auto finish = [&](std::string reason) {
     branch.stop_reason = std::move(reason);
-    branch.cpu_seconds = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
+    branch.cpu_seconds = first_two_cpu + double(std::clock() - cpu0) / CLOCKS_PER_SEC;
     return branch;
   };
   while (true) {

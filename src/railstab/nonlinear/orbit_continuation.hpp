@@ -66,7 +66,7 @@ struct OrbitBranch {
   std::vector<OrbitBifurcation> bifurcations;
   std::string stop_reason;                // why the continuation ended
   int failed_correctors = 0;
-  double cpu_seconds = 0.0;
+  double cpu_seconds = 0.0;               // the orbits' solves, the first two included
 };
 
 // Two first orbits from the Hopf point: equilibrium `x_eq` (at V_c), the

@@ -110,10 +110,15 @@ void write_json(std::ostream& out, const Model& model, const BifurcationResult& 
       .field("max_amplitude_m", r.max_amplitude_m)
       .field("eigen_solver", info.eigen_solver)
       .field("hunting_band_Hz", info.hunting_band_hz);
-  if (info.cycle_speed_m_per_s > 0.0)
-    j.field("cycle_speed_m_per_s", info.cycle_speed_m_per_s);
+  if (r.cycle_speed_m_per_s > 0.0)
+    j.field("cycle_speed_m_per_s", r.cycle_speed_m_per_s);
   else
     j.key("cycle_speed_m_per_s").null();
+  j.field("cycle_speed_default", r.cycle_speed_default);
+  if (r.no_default_cycle_reason.empty())
+    j.key("no_cycle_branch_reason").null();
+  else
+    j.field("no_cycle_branch_reason", r.no_default_cycle_reason);
   // The headline: both critical speeds and their ratio.
   if (has_linear_critical(r))
     j.field("linear_critical_speed_m_per_s", r.linear.critical_speed_m_per_s)
@@ -400,9 +405,15 @@ void write_markdown(std::ostream& md, const Model& model, const BifurcationResul
      << "branches not computed (other starts, amplitudes above the limit, speeds outside the "
      << "range), and the orbits are those of the model: knife-edge or linear contact has no "
      << "flange.\n\n";
+  if (!r.no_default_cycle_reason.empty()) md << md_text(r.no_default_cycle_reason) << ".\n\n";
   for (const BranchResult& b : r.branches) {
     md << "### Branch from the " << (b.origin == "hopf" ? "Hopf point" : "time-domain cycle");
-    if (b.origin == "time_domain") md << " at " << speed_text(info.cycle_speed_m_per_s);
+    if (b.origin == "time_domain") {
+      md << " at " << speed_text(r.cycle_speed_m_per_s);
+      if (r.cycle_speed_default)
+        md << " (the default start on profile contact: " << kDefaultCycleSpeedRatio
+           << " x the linear critical speed)";
+    }
     md << "\n\n";
     if (!b.error.empty()) {
       md << "Not started: " << md_text(b.error) << "\n\n";

@@ -26,7 +26,6 @@ struct BifurcationFiles {
 struct BifurcationRunInfo {
   std::string eigen_solver;        // of the linear search
   double hunting_band_hz = 20.0;
-  double cycle_speed_m_per_s = 0;  // 0: no time-domain branch asked for
 };
 
 // Adds every file, named <stem>_bifurcation..., to `outputs` (staged; the
