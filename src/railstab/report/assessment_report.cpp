@@ -116,7 +116,10 @@ std::string write_assessment_report(const Model& model, const RunningStabilityAs
          << "set datafile separator ','\nset terminal pngcairo size 900,520 font 'Sans,10' noenhanced\n"
          << "set output " << gnuplot_text(png) << "\nset grid\nset key outside right\n"
          << "set title " << gnuplot_text(model.name + ": EN 14363 running stability, rms over distance / limit") << "\n"
-         << "set xlabel 'window end [m]'\nset ylabel 'rms / limit [-]'\nset yrange [0:*]\nplot ";
+         << "set xlabel 'window end [m]'\nset ylabel 'rms / limit [-]'\nset yrange [0:*]\n"
+         // a margin above, so that the limit line (1) on a tic is not hidden
+         // in the frame's border
+         << "set offsets 0, 0, graph 0.08, 0\nplot ";
       int curve = 0;
       for (const AssessedQuantity& q : a.quantities) {
         if (!is_stability(q)) continue;

@@ -4,6 +4,8 @@
 #include <railstab/io/gnuplot.hpp>
 #include <railstab/io/json_writer.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <iomanip>
 #include <numbers>
@@ -122,12 +124,30 @@ std::string write_irregularity_report(const TrackIrregularities& irr, const Irre
          << "set multiplot layout 2,2 title "
          << gnuplot_text(scene_name + (check.has_target ? ": PSD of the irregularities (Welch) against the target"
                                                         : ": PSD of the irregularities (Welch)"))
-         << "\nset logscale xy\nset grid\nset xlabel 'Omega [rad/m]'\nset ylabel 'PSD [m^2/(rad/m)]'\n"
+         << "\nset logscale xy\nset format y '1e%L'\nset grid\nset xlabel 'Omega [rad/m]'\nset ylabel 'PSD [m^2/(rad/m)]'\n"
          // The band and an octave either side: beyond it the estimate is the
          // window's leakage floor, decades down.
          << "set xrange [" << std::numbers::pi / spec.wavelength_max_m << ":" << 4.0 * std::numbers::pi / spec.wavelength_min_m << "]\n"
          << "set key bottom left\n";
+      // The y range from the estimate inside the band (2 pi / wavelength_max
+      // to 2 pi / wavelength_min), a decade either side: beyond the band the
+      // synthesis is filtered to nothing, and an autoscaled axis down to
+      // that floor (1e-20) squeezes the band into a quarter of the panel.
+      const double band_lo = 2.0 * std::numbers::pi / spec.wavelength_max_m;
+      const double band_hi = 2.0 * std::numbers::pi / spec.wavelength_min_m;
       for (int c = 0; c < kIrregularityChannels; ++c) {
+        const WelchPsd& welch = check.channels[size_t(c)].welch;
+        double lo = INFINITY, hi = 0.0;
+        for (size_t k = 0; k < welch.omega_rad_per_m.size(); ++k) {
+          const double w = welch.omega_rad_per_m[k], v = welch.psd_m2_per_rad_per_m[k];
+          if (w < band_lo || w > band_hi || !(v > 0.0) || !std::isfinite(v)) continue;
+          lo = std::min(lo, v);
+          hi = std::max(hi, v);
+        }
+        if (hi > 0.0 && lo < hi)
+          gp << "set yrange [" << lo / 10.0 << ":" << hi * 10.0 << "]\n";
+        else
+          gp << "set yrange [*:*]\n";
         gp << "set title " << gnuplot_text(channel_name(c)) << "\n"
            << "plot psd_csv skip 1 using 1:($" << 3 + 2 * c << ">0?$" << 3 + 2 * c
            << ":1/0) with lines lw 1 title 'Welch'";

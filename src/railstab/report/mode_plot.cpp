@@ -146,23 +146,30 @@ std::vector<std::string> write_mode_plots(const Model& model, const StabilityPoi
     std::ostringstream title, note;
     title << model.name << ": " << m.name << ", " << std::setprecision(4) << m.frequency_hz
           << " Hz, damping ratio " << m.damping_ratio << ", at " << p.speed_m_per_s << " m/s";
-    note << "x, forward <- [m]   (plan view from above; ";
+    note << "plan view from above; ";
     if (lateral)
       note << "lateral and yaw scaled so the largest corner moves " << kDrawnAmplitude_m
-           << " m; grey dashed: rest)";
+           << " m; grey dashed: rest";
     else
-      note << "no lateral or yaw motion: the mode moves out of this plane)";
+      note << "no lateral or yaw motion: the mode moves out of this plane";
+    // A short unit (a bogie: about as long as wide) in a 2 x 2 grid of
+    // panels, a long one (a car) one panel per row: either way the panels
+    // are drawn to scale (ratio -1) at a readable size, the note said once.
+    const bool grid = (x_hi - x_lo + 1.0) < 3.0 * (2.0 * y_half);
+    const int columns = grid ? 2 : 1, rows = (phases + columns - 1) / columns;
+    const int height = grid ? 90 + 400 * rows : 110 + 190 * rows;
     for (const char* ext : {".png", ".svg"}) {
       const std::string file = base + ext;
       gp << (ext == std::string(".png")
                  ? "set terminal pngcairo size 1100,"
                  : "set terminal svg dynamic size 1100,")
-         << 140 + 190 * phases << " font 'Sans,10' noenhanced\n"
+         << height << " font 'Sans,10' noenhanced\n"
          << "set output " << gnuplot_text(file) << "\n"
-         << "set multiplot layout " << phases << ",1 title " << gnuplot_text(title.str()) << "\n"
+         << "set multiplot layout " << rows << "," << columns << " title "
+         << gnuplot_text(title.str()) << ".\"\\n\"." << gnuplot_text(note.str()) << "\n"
          << "set xrange [" << x_hi + 0.5 << ":" << x_lo - 0.5 << "]\n"  // forward to the left
          << "set yrange [" << -y_half << ":" << y_half << "]\nset size ratio -1\nunset key\n"
-         << "set xlabel " << gnuplot_text(note.str()) << "\nset ylabel 'y [m]'\nset grid\n";
+         << "set xlabel 'x [m], forward to the left'\nset ylabel 'y [m]'\nset grid\n";
       for (int ph = 0; ph < phases; ++ph)
         gp << "set title 'phase " << 360 * ph / phases << " deg'\n"
            << "plot " << gnuplot_path(data) << " index 0 using 1:2 with lines lc rgb '#b0b0b0' "

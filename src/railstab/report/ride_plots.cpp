@@ -56,6 +56,9 @@ void plot_ride_quantities(const Model& model, double speed_m_per_s, OutputSet& o
       limit_kN = limit_kN == 0.0 ? l : std::min(limit_kN, l);
     }
     if (!history.static_loads.empty()) {
+      // A margin above and below, so that a limit line on a tic (Y/Q 0.8)
+      // is not hidden in the frame's border.
+      gp << "set offsets 0, 0, graph 0.06, graph 0.06\n";
       begin_plot(gp, "sum_y", "Track shift force Sum Y of the wheelsets", "Sum Y [kN]");
       for (size_t w = 0; w < history.static_loads.size(); ++w)
         gp << (w ? ", " : "") << "wheel_forces_csv skip " << wheel_forces.header_lines
@@ -76,6 +79,7 @@ void plot_ride_quantities(const Model& model, double speed_m_per_s, OutputSet& o
              << gnuplot_text(model.bodies[size_t(history.static_loads[w].body)].name +
                              (s == 0 ? " left" : " right"));
       gp << ", 0.8 with lines dt 2 lc 'black' title 'EN 14363 limit 0.8'\n";
+      gp << "unset offsets\n";
     }
     if (!history.points.empty()) {
       const char* titles[2] = {"Lateral acceleration of the bodies (track frame, gravity excluded)",

@@ -1,5 +1,7 @@
 #include <railstab/report/sensitivity_report.hpp>
 
+#include <railstab/report/parameter_titles.hpp>
+
 #include <railstab/io/csv.hpp>
 #include <railstab/io/gnuplot.hpp>
 #include <railstab/io/json_writer.hpp>
@@ -102,8 +104,10 @@ void plot_tornado(OutputSet& outputs, const std::string& stem, const CriticalSpe
        << "set title " << gnuplot_text(title.str()) << "\nset xlabel 'elasticity (p/Vc) dVc/dp [-]'\n"
        << "set grid x\nunset key\nset style fill solid 0.8\nset yrange [0.4:" << n + 0.6 << "]\n"
        << "set ytics (";
-    for (size_t i = 0; i < n; ++i) gp << (i ? ", " : "") << gnuplot_text(s.parameters[i].key) << " " << n - i;
-    gp << ") font ',8'\nset xzeroaxis lt -1\n";
+    // The keys in words with their units (the CSV and JSON keep the keys).
+    for (size_t i = 0; i < n; ++i)
+      gp << (i ? ", " : "") << gnuplot_text(parameter_axis_title(s.parameters[i].key)) << " " << n - i;
+    gp << ") font ',9'\nset xzeroaxis lt -1\n";
     const std::string plot = "plot " + gnuplot_path(data) +
                              " using (0):1:(0):2:($1-0.35):($1+0.35):($2 >= 0 ? 0x2e8b57 : 0xcd3333) "
                              "with boxxyerror lc rgb variable";
