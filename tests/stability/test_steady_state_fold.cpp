@@ -19,27 +19,20 @@
 
 #include <gtest/gtest.h>
 
+#include "support/arc_search.hpp"
+
 #include <cmath>
 
 using namespace railstab;
+using railstab::test::in_arc;
+constexpr auto search = railstab::test::search_in_arc;
 
 namespace {
 
 const std::string kVehicle = std::string(RAILSTAB_CASES_DIR) + "/thesis_vehicle_s1002_curve.toml";
 const std::string kCoach = std::string(RAILSTAB_CASES_DIR) + "/coach_s1002_curve.toml";
 
-SceneOverrides in_arc(double speed_m_per_s) {
-  return SceneOverrides{speed_m_per_s, std::nullopt, 2000.0, {}};
-}
 
-CriticalSpeedResult search(const std::string& scene, double from, double to, double step) {
-  const PreparedScene s = prepare_scene(scene, in_arc(from));
-  CriticalSpeedOptions o;
-  o.from_m_per_s = from;
-  o.to_m_per_s = to;
-  o.grid_step_m_per_s = step;
-  return find_critical_speed(s.model, s.equilibrium.state, s.speed_m_per_s, o);
-}
 
 // The fold between `from` and `to` against Newton continued in speed from
 // `from`: a steady state 2 mm/s below it, none 2 mm/s above it (measured

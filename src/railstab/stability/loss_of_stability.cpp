@@ -21,22 +21,33 @@ std::string loss_of_stability_key(LossOfStabilityKind kind) {
   return "undetermined";
 }
 
-LossOfStability classify_loss_of_stability(const Model& model, const StabilityPoint& grid_stable,
-                                           const StabilityPoint& grid_unstable,
-                                           const StabilityPoint& stable,
-                                           const StabilityPoint& unstable,
-                                           const StabilityPoint& at_critical) {
+namespace {
+
+// The two sides of a bracket: speeds, largest real parts and the unstable
+// side's least stable mode.
+LossOfStability bracket_sides(const StabilityPoint& stable, const StabilityPoint& unstable) {
   LossOfStability out;
   out.stable_speed_m_per_s = stable.speed_m_per_s;
   out.unstable_speed_m_per_s = unstable.speed_m_per_s;
   out.stable_max_real_part_per_s = stable.max_real_part;
   out.unstable_max_real_part_per_s = unstable.max_real_part;
-  out.grid_real_part_difference_per_s = grid_unstable.max_real_part - grid_stable.max_real_part;
   if (unstable.least_stable >= 0) {
     const ModeReport& m = unstable.modes[size_t(unstable.least_stable)];
     out.unstable_mode = m.name;
     out.unstable_eigenvalue = m.eigenvalue;
   }
+  return out;
+}
+
+}  // namespace
+
+LossOfStability classify_loss_of_stability(const Model& model, const StabilityPoint& grid_stable,
+                                           const StabilityPoint& grid_unstable,
+                                           const StabilityPoint& stable,
+                                           const StabilityPoint& unstable,
+                                           const StabilityPoint& at_critical) {
+  LossOfStability out = bracket_sides(stable, unstable);
+  out.grid_real_part_difference_per_s = grid_unstable.max_real_part - grid_stable.max_real_part;
   out.unstable_side_from_pseudo_transient = unstable.equilibrium.pseudo_transient_steps > 0;
   // Largest change of a translation coordinate between two steady states
   // (rotations are in rad, not comparable with m).
@@ -87,18 +98,9 @@ LossOfStability classify_loss_of_stability(const Model& model, const StabilityPo
 
 LossOfStability fold_loss_of_stability(const StabilityPoint& before, const StabilityPoint& after,
                                        const SteadyStateFold& fold) {
-  LossOfStability out;
+  LossOfStability out = bracket_sides(before, after);
   out.kind = LossOfStabilityKind::fold;
-  out.stable_speed_m_per_s = before.speed_m_per_s;
-  out.unstable_speed_m_per_s = after.speed_m_per_s;
-  out.stable_max_real_part_per_s = before.max_real_part;
-  out.unstable_max_real_part_per_s = after.max_real_part;
   out.grid_real_part_difference_per_s = after.max_real_part - before.max_real_part;
-  if (after.least_stable >= 0) {
-    const ModeReport& m = after.modes[size_t(after.least_stable)];
-    out.unstable_mode = m.name;
-    out.unstable_eigenvalue = m.eigenvalue;
-  }
   out.fold_speed_m_per_s = fold.speed_m_per_s;
   out.fold_coarse_speed_m_per_s = fold.coarse_speed_m_per_s;
   // Smooth (a saddle-node) where the unstable mode past the fold is, below
