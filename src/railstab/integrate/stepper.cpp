@@ -1,5 +1,6 @@
 #include <railstab/integrate/stepper.hpp>
 
+#include <railstab/integrate/dense_newton_matrix.hpp>
 #include <railstab/integrate/eigen_dense_solver.hpp>
 
 #include <sunlinsol/sunlinsol_klu.h>
@@ -40,7 +41,7 @@ NewtonLinearSolver::NewtonLinearSolver(N_Vector y, SUNContext ctx, const ModelCa
     A = SUNSparseMatrix(n, n, data.sparse_layout.nonzeros(), CSC_MAT, ctx);
     if (A) LS = SUNLinSol_KLU(y, A, ctx);
   } else {
-    A = SUNDenseMatrix(n, n, ctx);
+    A = make_dense_newton_matrix(n, ctx);
     if (A) LS = make_eigen_dense_solver(n, ctx);
   }
   if (!A || !LS) {

@@ -1,5 +1,7 @@
 #include <railstab/nonlinear/flow_sensitivity.hpp>
 
+#include <railstab/integrate/dense_newton_matrix.hpp>
+
 #include <cvodes/cvodes.h>
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
@@ -145,7 +147,7 @@ FlowResult integrate_flow(const FlowSystem& system, const Eigen::VectorXd& x0,
   check(SUNContext_Create(nullptr, &run.ctx), "SUNContext_Create");
   run.y = N_VNew_Serial(n, run.ctx);
   view(run.y) = x0;
-  run.A = SUNDenseMatrix(n, n, run.ctx);
+  run.A = make_dense_newton_matrix(n, run.ctx);  // SUNDIALS dense, faster copy and I - gamma J
   run.LS = SUNLinSol_Dense(run.y, run.A, run.ctx);
   run.mem = CVodeCreate(CV_BDF, run.ctx);
   if (!run.y || !run.A || !run.LS || !run.mem) throw std::runtime_error("integrate_flow: out of memory");
