@@ -8,7 +8,7 @@
 #include <railstab/setup/build_model.hpp>
 #include <railstab/stability/speed_analysis.hpp>
 
-#include <Eigen/Eigenvalues>
+#include <railstab/linalg/dense_decompositions.hpp>
 
 #include <algorithm>
 #include <cmath>

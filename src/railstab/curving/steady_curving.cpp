@@ -6,7 +6,7 @@
 #include <railstab/integrate/root_functions.hpp>
 #include <railstab/linear/jacobian.hpp>
 
-#include <Eigen/Eigenvalues>
+#include <railstab/linalg/dense_decompositions.hpp>
 #include <railstab/ride/wheelset_forces.hpp>
 
 #include <algorithm>

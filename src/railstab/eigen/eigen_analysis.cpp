@@ -2,6 +2,7 @@
 #include <railstab/eigen/balance.hpp>
 #include <railstab/eigen/decoupled_blocks.hpp>
 #include <railstab/eigen/eigenvector_phase.hpp>
+#include <railstab/linalg/dense_decompositions.hpp>
 
 #include <arpack/arpack.hpp>
 

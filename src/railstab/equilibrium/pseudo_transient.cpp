@@ -3,6 +3,7 @@
 #include <railstab/equilibrium/equilibrium.hpp>
 #include <railstab/linear/jacobian.hpp>
 #include <railstab/model/equations_of_motion.hpp>
+#include <railstab/linalg/dense_decompositions.hpp>
 
 #include <algorithm>
 #include <cmath>

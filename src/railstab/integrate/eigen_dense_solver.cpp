@@ -3,7 +3,7 @@
 #include <nvector/nvector_serial.h>
 #include <sunmatrix/sunmatrix_dense.h>
 
-#include <Eigen/Dense>
+#include <railstab/linalg/dense_decompositions.hpp>
 
 #include <new>
 

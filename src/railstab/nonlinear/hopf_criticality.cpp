@@ -3,9 +3,7 @@
 #include <railstab/equilibrium/speed_continuation.hpp>
 #include <railstab/linear/linearization.hpp>
 
-#include <Eigen/Eigenvalues>
-#include <Eigen/LU>
-#include <Eigen/SVD>
+#include <railstab/linalg/dense_decompositions.hpp>
 
 #include <cmath>
 #include <ctime>

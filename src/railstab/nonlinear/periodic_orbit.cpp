@@ -1,5 +1,7 @@
 #include <railstab/nonlinear/periodic_orbit.hpp>
 
+#include <railstab/linalg/dense_decompositions.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <ctime>

@@ -6,7 +6,7 @@
 #include <railstab/sensitivity/parameter_derivative.hpp>
 #include <railstab/setup/build_model.hpp>
 
-#include <Eigen/Eigenvalues>
+#include <railstab/linalg/dense_decompositions.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -5,7 +5,7 @@
 #include <railstab/model/equations_of_motion.hpp>
 #include <railstab/setup/build_model.hpp>
 
-#include <Eigen/Eigenvalues>
+#include <railstab/linalg/dense_decompositions.hpp>
 
 #include <algorithm>
 #include <limits>
@@ -269,7 +269,10 @@ std::complex<double> eigenvalue_derivative(const Eigen::MatrixXd& A, const Eigen
                                            std::complex<double> lambda,
                                            const Eigen::VectorXcd& v) {
   // Left eigenvector: w^H A = lambda w^H  <=>  A^T u = lambda u with u = conj(w).
-  const Eigen::EigenSolver<Eigen::MatrixXd> left(A.transpose());
+  // A^T copied into a MatrixXd: EigenSolver on a Transpose expression would be
+  // a second instantiation (the shared one takes a MatrixXd,
+  // linalg/dense_decompositions.hpp); the decomposition reads the same numbers.
+  const Eigen::EigenSolver<Eigen::MatrixXd> left(Eigen::MatrixXd(A.transpose()));
   Eigen::Index best = 0;
   (left.eigenvalues().array() - lambda).abs().minCoeff(&best);
   const Eigen::VectorXcd u = left.eigenvectors().col(best);
