@@ -33,7 +33,10 @@ std::string verdict_sentence(const CriticalSpeedResult& r) {
       s << "critical speed " << std::fixed << std::setprecision(2) << r.critical_speed_m_per_s
         << " m/s";
       if (r.loss.kind == LossOfStabilityKind::jump)
-        s << " (stability lost by a jump of the steady state, no eigenvalue crosses)";
+        s << (r.loss.steady_state_continuous
+                  ? " (stability lost by a jump of the eigenvalues on a continuous steady state: "
+                    "the Jacobian jumps, no eigenvalue crosses)"
+                  : " (stability lost by a jump of the steady state, no eigenvalue crosses)");
       else if (r.loss.kind == LossOfStabilityKind::fold)
         s << (r.loss.fold_smooth ? " (the steady state's branch folds back: a real eigenvalue "
                                    "reaches zero, and no steady state near the one followed "
