@@ -293,7 +293,7 @@ PathOutcome follow(SteadyStatePath& path, const Eigen::VectorXd& start_state, Co
     s.equilibrium = std::move(eq);
     s.continuation_steps = r.steps;
     s.method = "arclength continuation (" + std::to_string(r.steps) + " steps, " +
-               std::to_string(r.folds) + " fold(s)) from " + from_text;
+               std::to_string(r.fold_points.size()) + " fold(s)) from " + from_text;
     return s;
   };
   if (r.reached) {

@@ -202,12 +202,13 @@ ArclengthResult continue_by_arclength(SteadyStatePath& path, const Eigen::Vector
     new_tangent.normalize();
     if (new_tangent.dot(tangent) < 0.0) new_tangent = -new_tangent;
     if ((new_tangent(m) > 0.0) != (tangent(m) > 0.0)) {
-      ++out.folds;
       const double a = tangent(m), b = new_tangent(m), h = (zc - z).norm();
       ArclengthResult::Fold fold;
-      fold.lambda = (z(m) + a * a * h / (2.0 * (a - b))) / L;
       fold.before_lambda = lambda;
       fold.after_lambda = zc(m) / L;
+      const double vertex = (z(m) + a * a * h / (2.0 * (a - b))) / L;
+      fold.lambda = a > 0.0 ? std::max({vertex, fold.before_lambda, fold.after_lambda})
+                            : std::min({vertex, fold.before_lambda, fold.after_lambda});
       fold.before_state = x;
       fold.after_state = state_of(zc);
       out.fold_points.push_back(std::move(fold));
@@ -263,7 +264,7 @@ ArclengthResult continue_by_arclength(SteadyStatePath& path, const Eigen::Vector
     if (lambda < -options.max_backtrack / L || path.speed_at(lambda) < 1.0) {
       std::ostringstream why;
       why << "the branch turned back at a fold and ran back beyond its start to "
-          << path.describe(lambda) << " (" << out.folds << " fold(s))";
+          << path.describe(lambda) << " (" << out.fold_points.size() << " fold(s))";
       return fail(why.str());
     }
     if (iterations <= 3) ds = std::min(options.max_step, 1.5 * ds);

@@ -106,15 +106,19 @@ struct ArclengthResult {
   double furthest_lambda = 0.0;
   Eigen::VectorXd furthest_state;
   int steps = 0;                 // accepted predictor-corrector steps
-  int folds = 0;                 // sign changes of dlambda/ds
-  // Each fold passed, in order: where dlambda/ds changes sign between two
-  // converged points. With a = dLambda/ds at the point before, b < 0 (or
-  // > 0) at the point after and h = |z_after - z_before| the chord between
-  // them, Lambda(s) taken as the quadratic with those end slopes puts the
-  // fold at Lambda_before + a^2 h / (2 (a - b)): its error is O(h^3), so a
-  // short max_step locates the fold closely (stability/steady_state_fold.hpp).
+  // Each fold passed (a sign change of dlambda/ds), in order: where
+  // dlambda/ds changes sign between two converged points. With a =
+  // dLambda/ds at the point before, b < 0 (or > 0) at the point after and
+  // h = |z_after - z_before| the chord between them, Lambda(s) taken as the
+  // quadratic with those end slopes puts the fold at Lambda_before + a^2 h /
+  // (2 (a - b)): its error is O(h^3), so a short max_step locates the fold
+  // closely (stability/steady_state_fold.hpp). The turning point lies at
+  // least as far as both converged points (they are on the branch), so the
+  // fold is never put short of them: at a corner of the branch (the
+  // Jacobian jumps) the quadratic's vertex can fall just below the point
+  // past it.
   struct Fold {
-    double lambda = 0.0;           // interpolated
+    double lambda = 0.0;           // interpolated, at least before_ and after_lambda
     double before_lambda = 0.0, after_lambda = 0.0;
     Eigen::VectorXd before_state, after_state;
   };

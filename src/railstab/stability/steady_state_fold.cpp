@@ -3,7 +3,6 @@
 #include <railstab/equilibrium/arclength_continuation.hpp>
 
 #include <algorithm>
-#include <optional>
 #include <vector>
 
 namespace railstab {
@@ -16,7 +15,6 @@ LostSteadyState continue_past_lost_steady_state(const Model& model, const Eigen:
   ArclengthOptions options;
   options.time_s = time_s;
   const ArclengthResult coarse = continue_by_arclength(path, state, options);
-  out.folds = coarse.folds;
   if (coarse.reached) {
     out.reached = true;
     out.at_target = coarse.end;
@@ -25,10 +23,10 @@ LostSteadyState continue_past_lost_steady_state(const Model& model, const Eigen:
     if (!coarse.reached) out.failure = coarse.failure;
     return out;
   }
-  // Again with short steps, up to the first fold, keeping the last few
-  // points before it; then once more with steps five times shorter from
-  // the third point before the fold. The interpolation's error is O(h^3):
-  // the last two estimates' difference bounds the last one's error.
+  // Again with short steps up to the first fold, keeping the last points
+  // before it; then once more with steps five times shorter from the third
+  // point before the fold. The interpolation's error is O(h^3): the last
+  // two estimates' difference bounds the last one's error.
   struct Point {
     double lambda;
     Eigen::VectorXd state;
@@ -51,46 +49,32 @@ LostSteadyState continue_past_lost_steady_state(const Model& model, const Eigen:
     };
     return continue_by_arclength(on, from_state, fine);
   };
+  const ArclengthResult::Fold& c = coarse.fold_points.front();
+  SteadyStateFold fold;
+  // The default steps alone: the highest converged point bounds the fold
+  // from below, the only error estimate there is.
+  auto take = [&](const SpeedPath& on, const ArclengthResult::Fold& f, double previous_m_per_s) {
+    fold.speed_m_per_s = on.speed_at(f.lambda);
+    fold.coarse_speed_m_per_s = previous_m_per_s;
+    fold.before_speed_m_per_s = on.speed_at(f.before_lambda);
+    fold.after_speed_m_per_s = on.speed_at(f.after_lambda);
+    fold.before_state = f.before_state;
+    fold.after_state = f.after_state;
+  };
+  take(path, c, path.speed_at(std::max(c.before_lambda, c.after_lambda)));
   std::vector<Point> recent;
   const ArclengthResult refined = up_to_first_fold(path, state, kRefineMaxStep, &recent);
-  const ArclengthResult* used = &coarse;
-  const SpeedPath* used_path = &path;
-  double previous_estimate = 0.0;
-  std::optional<SpeedPath> closer_path;
-  ArclengthResult closest;
   if (!refined.fold_points.empty()) {
-    used = &refined;
-    const ArclengthResult::Fold& c = coarse.fold_points.front();
-    previous_estimate = path.speed_at(std::max({c.lambda, c.before_lambda, c.after_lambda}));
-    // The third point before the fold (recent holds the points up to the
-    // one past it, up to four).
-    if (recent.size() >= 4) {
+    const ArclengthResult::Fold& r = refined.fold_points.front();
+    take(path, r, path.speed_at(c.lambda));
+    if (recent.size() >= 4) {  // the third point before the fold
       const Point& p = recent[recent.size() - 4];
-      closer_path.emplace(model, path.speed_at(p.lambda), to_m_per_s);
-      closest = up_to_first_fold(*closer_path, p.state, kRefineMaxStep / 5.0, nullptr);
-      if (!closest.fold_points.empty()) {
-        const ArclengthResult::Fold& r = refined.fold_points.front();
-        previous_estimate = path.speed_at(std::max({r.lambda, r.before_lambda, r.after_lambda}));
-        used = &closest;
-        used_path = &*closer_path;
-      }
+      SpeedPath closer(model, path.speed_at(p.lambda), to_m_per_s);
+      const ArclengthResult closest = up_to_first_fold(closer, p.state, kRefineMaxStep / 5.0, nullptr);
+      if (!closest.fold_points.empty())
+        take(closer, closest.fold_points.front(), path.speed_at(r.lambda));
     }
   }
-  const ArclengthResult::Fold& f = used->fold_points.front();
-  // The coarse run alone: its highest converged point bounds the fold from
-  // below, the only error estimate there is.
-  if (used == &coarse) previous_estimate = path.speed_at(std::max(f.before_lambda, f.after_lambda));
-  SteadyStateFold fold;
-  // A converged point lies on the branch, so the turning point is at least
-  // as fast as both: at a corner (the Jacobian jumps) the quadratic's vertex
-  // can fall just below the point past it.
-  fold.speed_m_per_s =
-      used_path->speed_at(std::max({f.lambda, f.before_lambda, f.after_lambda}));
-  fold.coarse_speed_m_per_s = previous_estimate;
-  fold.before_speed_m_per_s = used_path->speed_at(f.before_lambda);
-  fold.after_speed_m_per_s = used_path->speed_at(f.after_lambda);
-  fold.before_state = f.before_state;
-  fold.after_state = f.after_state;
   out.fold = std::move(fold);
   return out;
 }

@@ -42,7 +42,6 @@ struct LostSteadyState {
   // missed the branch; after folds: on another part of the branch).
   bool reached = false;
   EquilibriumResult at_target;
-  int folds = 0;
   std::string failure;  // why the continuation stopped short (neither of the above)
 };
 
