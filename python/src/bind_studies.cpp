@@ -15,7 +15,6 @@
 #include <railstab/scene_reading/scene_error.hpp>
 #include <railstab/io/file_names.hpp>
 #include <railstab/nonlinear/bifurcation_analysis.hpp>
-#include <railstab/nonlinear/hopf_assessment.hpp>
 #include <railstab/report/bifurcation_report.hpp>
 #include <railstab/report/contact_geometry_report.hpp>
 #include <railstab/report/model_check_report.hpp>
@@ -204,7 +203,7 @@ py::dict bifurcation(const std::string& scene, const std::vector<std::string>& s
     warnings = model_warnings(s);
     // Without a cycle speed only profile contact starts a time-domain
     // branch by default (analyse_bifurcation).
-    if (!o.from_hopf && !(o.cycle_speed_m_per_s > 0.0) && !has_profile_contact(s.model))
+    if (!starts_a_branch(s.model, o))
       throw std::invalid_argument(
           "hopf_branch=False leaves no branch to compute: give cycle_speed as well (the default "
           "time-domain start is for profile contact, and the scene has none)");

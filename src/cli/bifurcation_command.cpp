@@ -5,7 +5,6 @@
 #include <railstab/io/gnuplot.hpp>
 #include <railstab/io/output_set.hpp>
 #include <railstab/nonlinear/bifurcation_analysis.hpp>
-#include <railstab/nonlinear/hopf_assessment.hpp>
 #include <railstab/report/bifurcation_report.hpp>
 #include <railstab/report/run_conditions.hpp>
 
@@ -42,7 +41,7 @@ void run_bifurcation(const BifurcationArgs& a) {
   const PreparedScene s = prepare_command_scene(a);
   // Without a cycle speed only profile contact starts a time-domain branch
   // by default (analyse_bifurcation).
-  if (!o.from_hopf && !(o.cycle_speed_m_per_s > 0.0) && !has_profile_contact(s.model))
+  if (!starts_a_branch(s.model, o))
     throw std::invalid_argument(
         "--no-hopf-branch leaves no branch to compute: give --cycle-speed V as well (the "
         "default time-domain start is for profile contact, and " + a.scene +

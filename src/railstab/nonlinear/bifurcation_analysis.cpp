@@ -228,6 +228,11 @@ NonlinearCriticalSpeed nonlinear_critical_speed(const BifurcationResult& r) {
   return n;
 }
 
+bool starts_a_branch(const Model& model, const BifurcationOptions& options) {
+  return options.from_hopf || options.cycle_speed_m_per_s > 0.0 ||
+         (options.default_cycle_start && has_profile_contact(model));
+}
+
 BifurcationResult analyse_bifurcation(const Model& model, const Eigen::VectorXd& equilibrium,
                                       double speed_m_per_s, const BifurcationOptions& options) {
   if (!(options.linear.from_m_per_s < options.linear.to_m_per_s))

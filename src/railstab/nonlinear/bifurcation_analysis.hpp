@@ -128,6 +128,11 @@ struct BifurcationResult {
 // StableBound); `r.branches`, `r.linear` and `r.hopf_kind` set.
 NonlinearCriticalSpeed nonlinear_critical_speed(const BifurcationResult& r);
 
+// Whether `options` start any branch on `model`: the Hopf branch, a given
+// cycle speed, or the profile-contact default (default_cycle_start). The
+// front ends refuse a run without one, each naming its own flags.
+bool starts_a_branch(const Model& model, const BifurcationOptions& options);
+
 // `equilibrium` is the steady state at `speed_m_per_s` (the scene's).
 BifurcationResult analyse_bifurcation(const Model& model, const Eigen::VectorXd& equilibrium,
                                       double speed_m_per_s, const BifurcationOptions& options);
