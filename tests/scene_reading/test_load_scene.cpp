@@ -458,6 +458,38 @@ TEST(SceneLoader, ProfileContactIsRecordedNotBuilt) {
   EXPECT_FALSE(contact.profile_geometry);
 }
 
+// A scene on a contact table that names no integrator gets CVODE Adams at
+// 1e-4/1e-8 (scene_spec.hpp, profile_contact_simulation_defaults); a key it
+// gives is kept; a knife-edge scene keeps the SDIRK at 1e-3/1e-6.
+TEST(SceneLoader, ProfileContactDefaultsToAdamsAtTighterTolerances) {
+  const std::string path = std::string(RAILSTAB_CASES_DIR) + "/thesis_bogie_s1002_tangent.toml";
+  std::string text = read_scene_text(path);
+  for (const char* key : {"integrator = ", "relative_tolerance = ", "absolute_tolerance = "}) {
+    const size_t at = text.find(std::string("\n") + key);
+    ASSERT_NE(at, std::string::npos) << key;
+    text.erase(at + 1, text.find('\n', at + 1) - at);
+  }
+  const SimulationSpec profile = load_scene_text(text, path).simulation;
+  EXPECT_EQ(profile.integrator, IntegratorKind::cvode_adams);
+  EXPECT_EQ(profile.relative_tolerance, 1e-4);
+  EXPECT_EQ(profile.absolute_tolerance, 1e-8);
+  std::string with_rtol = text;
+  const size_t table = with_rtol.find("[simulation]\n");
+  ASSERT_NE(table, std::string::npos);
+  with_rtol.insert(table + 13, "relative_tolerance = 1e-5\n");
+  const SimulationSpec given = load_scene_text(with_rtol, path).simulation;
+  EXPECT_EQ(given.integrator, IntegratorKind::cvode_adams);
+  EXPECT_EQ(given.relative_tolerance, 1e-5);
+  EXPECT_EQ(given.absolute_tolerance, 1e-8);
+  const SimulationSpec named = load_scene_file(path).simulation;  // the case names its own
+  EXPECT_EQ(named.integrator, IntegratorKind::arkode_dirk);
+  EXPECT_EQ(named.relative_tolerance, 1e-3);
+  const SimulationSpec knife_edge = load_scene_text(kMinimalScene, kSource).simulation;
+  EXPECT_EQ(knife_edge.integrator, IntegratorKind::arkode_dirk);
+  EXPECT_EQ(knife_edge.relative_tolerance, 1e-3);
+  EXPECT_EQ(knife_edge.absolute_tolerance, 1e-6);
+}
+
 TEST(SceneLoader, ThesisVehicleCaseHasMirroredSuspension) {
   const SceneSpec scene =
       load_scene_file(std::string(RAILSTAB_CASES_DIR) + "/thesis_vehicle_curve.toml");

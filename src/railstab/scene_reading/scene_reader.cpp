@@ -9,6 +9,7 @@
 #include <railstab/scene_reading/track_reader.hpp>
 #include <railstab/scene_reading/train_reader.hpp>
 
+#include <algorithm>
 #include <string_view>
 #include <utility>
 
@@ -35,7 +36,10 @@ SceneAsRead read_scene_document(const std::string& toml_text, const std::string&
   ElementList elements = read_elements(top);
   scene.elements = std::move(elements.specs);
   read.element_paths = std::move(elements.file_paths);
-  scene.simulation = read_simulation(top);
+  const bool contact_table =
+      std::any_of(scene.contacts.begin(), scene.contacts.end(),
+                  [](const ContactSpec& c) { return uses_contact_table(c.geometry); });
+  scene.simulation = read_simulation(top, contact_table);
   scene.assessment = read_assessment(top);
   read_train(top, scene, read.element_paths);
   return read;

@@ -26,11 +26,11 @@ const Choices<IntegratorKind>& integrator_choices() {
 
 }  // namespace
 
-SimulationSpec read_simulation(const TableReader& top) {
+SimulationSpec read_simulation(const TableReader& top, bool contact_table) {
   const std::optional<TableReader> simulation = top.optional_table(
       "simulation", {"t_end_s", "output_interval_s", "integrator", "integrator_order",
                      "relative_tolerance", "absolute_tolerance"});
-  SimulationSpec spec;
+  SimulationSpec spec = contact_table ? profile_contact_simulation_defaults() : SimulationSpec{};
   if (!simulation) return spec;
   spec.t_end_s = simulation->number_or("t_end_s", "s", spec.t_end_s);
   spec.output_interval_s = simulation->number_or("output_interval_s", "s", spec.output_interval_s);
