@@ -26,11 +26,13 @@
 #include <railstab/stability/speed_analysis.hpp>
 
 #include <cmath>
+#include <complex>
 #include <cstdlib>
 #include <cstdio>
 #include <ctime>
 #include <numbers>
 #include <string>
+#include <vector>
 
 using namespace railstab;
 
@@ -271,6 +273,34 @@ TEST(OrbitContinuationBautin, FoldFlatterThanTheSpeedResolutionIsFoundByItsMulti
 // The multiplier against the decay of a perturbed run: on the stable orbit
 // r^2 = 0.8 (alpha = 0.64 - 0.8), a start at radius r + d returns after k
 // periods at r + mu^k d (to first order in d).
+// The bifurcation between two orbits is named by the multiplier that left
+// (or entered) the unit circle, not by the one nearest it: the S1002
+// vehicle's fold had a weakly damped pair at |mu| 0.996 beside the real
+// multiplier that passed +1 (0.99 -> 1.008), and was once named a torus.
+TEST(OrbitContinuation, TheCrossingMultiplierIsTheOneThatLeftTheCircle) {
+  using C = std::complex<double>;
+  auto orbit = [](std::vector<C> mu) {
+    PeriodicOrbit o;
+    o.floquet_multipliers = Eigen::Map<Eigen::VectorXcd>(mu.data(), Eigen::Index(mu.size()));
+    o.trivial_multiplier = 0;
+    return o;
+  };
+  const C pair = std::polar(0.996, 0.5);
+  const PeriodicOrbit stable = orbit({1.0, pair, std::conj(pair), 0.99, 0.2});
+  const PeriodicOrbit past_fold = orbit({1.0, pair, std::conj(pair), 1.008, 0.2});
+  EXPECT_EQ(crossing_multiplier(stable, past_fold, 1e-6), C(1.008));  // losing stability
+  EXPECT_EQ(crossing_multiplier(past_fold, stable, 1e-6), C(1.008));  // regaining it
+  const C out = std::polar(1.01, 0.5);
+  const PeriodicOrbit torus = orbit({1.0, out, std::conj(out), 0.99, 0.2});
+  EXPECT_NEAR(std::abs(crossing_multiplier(stable, torus, 1e-6)), 1.01, 1e-15);
+  EXPECT_GT(std::abs(crossing_multiplier(stable, torus, 1e-6).imag()), 0.4);
+  const PeriodicOrbit doubling = orbit({1.0, pair, std::conj(pair), 0.99, -1.02});
+  EXPECT_EQ(crossing_multiplier(stable, doubling, 1e-6), C(-1.02));
+  // The trivial multiplier (index 0) never counts, whatever its modulus.
+  const PeriodicOrbit trivial_off = orbit({1.5, pair, std::conj(pair), 1.008, 0.2});
+  EXPECT_EQ(crossing_multiplier(stable, trivial_off, 1e-6), C(1.008));
+}
+
 TEST(OrbitContinuationBautin, MultiplierOfAStableOrbitMatchesThePerturbedRunsDecay) {
   const FlowSystem s = normal_form(true);
   const double r = std::sqrt(0.8), V = kHopfSpeed + 0.64 - 0.8;

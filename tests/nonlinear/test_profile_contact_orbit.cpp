@@ -18,6 +18,7 @@
 #include <railstab/nonlinear/bifurcation_analysis.hpp>
 #include <railstab/nonlinear/model_orbits.hpp>
 #include <railstab/nonlinear/periodic_orbit.hpp>
+#include <railstab/nonlinear/speed_ramp.hpp>
 #include <railstab/setup/prepare_scene.hpp>
 
 #include <cstdio>
@@ -111,4 +112,76 @@ TEST(ProfileContactOrbit, S1002BogieDefaultCycleStartFindsTheFlangeHuntingCycle)
   EXPECT_NEAR(first.amplitude(r.coords.amplitude_state), 5.18e-3, 0.2e-3);
   EXPECT_NEAR(first.period_s, 0.478, 0.02 * 0.478);
   EXPECT_TRUE(first.stable);
+}
+
+// Issue 22: the nonlinear critical speed of the thesis vehicle on S1002/UIC60
+// (82 states, linear critical speed 118.53 m/s) by continuation, against the
+// ramp method at two rates. The branch from the cycle a run from 5 mm
+// settles on at 77 m/s (0.81 mm) is stable down to a fold at 75.89 m/s
+// (`railstab bifurcation cases/thesis_vehicle_s1002_tangent.toml
+// --cycle-speed 77 --no-hopf-branch`, docs/nonlinear.md). A ramp started on
+// that cycle follows it down to the fold and loses its hunting below it,
+// later by a speed delay d(a) that shrinks with the rate a: d ~ a^p, p = 2/3
+// for the slow passage through a saddle-node (the orbit lingers near its
+// ghost for a time ~ a^(-1/3)) and 1 for the decay after it, so 1/2 <= p <= 1
+// bounds it with room. Two rates a1 > a2 with end speeds V1 < V2 then put
+// the zero-rate limit (the fold) at V2 + (V2 - V1) r / (1 - r), r = (a2/a1)^p,
+// i.e. in [V2 + 0.67 (V2 - V1), V2 + 1.72 (V2 - V1)] for a2/a1 = 0.4: the
+// "spread of the ramp method at two rates" the fold must lie in. No number of
+// either method is put in: both are computed here. (The same bracket holds on
+// the thesis bogie: ramps 30.36 / 32.33 m/s, bracket 33.6-35.7, fold 35.02.)
+TEST(ProfileContactOrbit, S1002VehicleFoldLiesWhereItsRampsTendAtZeroRate) {
+  SceneOverrides overrides;
+  overrides.values = {SceneValueSetting("track.segments[0].length_m", 5000.0)};
+  const PreparedScene scene =
+      prepare_scene(std::string(RAILSTAB_CASES_DIR) + "/thesis_vehicle_s1002_tangent.toml", overrides);
+  BifurcationOptions o;
+  o.linear.from_m_per_s = 60.0;
+  o.linear.to_m_per_s = 125.0;
+  o.linear.grid_step_m_per_s = 2.5;
+  o.from_hopf = false;
+  o.cycle_speed_m_per_s = 77.0;
+  o.max_amplitude_m = 0.008;
+  // The fold comes after the 6th orbit (75.8925, 75.8924, 75.8931 m/s; the
+  // 7th orbit's real multiplier 1.008 past +1): 8 orbits, about 90 s CPU.
+  o.continuation.max_orbits = 8;
+  o.progress = [](const std::string& line) { std::printf("[ vehicle  ] %s\n", line.c_str()); };
+  const BifurcationResult r =
+      analyse_bifurcation(scene.model, scene.equilibrium.state, scene.speed_m_per_s, o);
+  ASSERT_TRUE(r.linear.critical_speed_found);
+  ASSERT_EQ(r.branches.size(), 1u);
+  ASSERT_TRUE(r.branches[0].error.empty()) << r.branches[0].error;
+  const OrbitBranch& branch = r.branches[0].branch;
+  ASSERT_TRUE(r.nonlinear.found) << r.nonlinear.explanation;
+  ASSERT_EQ(r.nonlinear.bound, StableBound::fold) << r.nonlinear.explanation;
+  const double fold = r.nonlinear.speed_m_per_s;
+  const PeriodicOrbit& first = branch.orbits.front();
+  ASSERT_TRUE(first.stable);
+  std::printf("[ vehicle  ] V_c %.3f m/s; first orbit %.4f mm at %.2f m/s; fold %.4f m/s after %zu "
+              "orbits, %.1f s CPU\n",
+              r.linear.critical_speed_m_per_s, 1e3 * first.amplitude(r.coords.amplitude_state),
+              first.speed_m_per_s, fold, branch.orbits.size(), branch.cpu_seconds);
+  EXPECT_LT(fold, first.speed_m_per_s);
+  EXPECT_LT(fold, r.linear.critical_speed_m_per_s);
+
+  // The ramps from the first orbit (on the stable cycle at 77 m/s).
+  std::vector<double> ends;
+  for (double a : {0.5, 0.2}) {
+    SpeedRampOptions ramp;
+    ramp.start_speed_m_per_s = first.speed_m_per_s;
+    ramp.ramp_rate_m_per_s2 = a;
+    ramp.end_speed_m_per_s = 70.0;
+    ramp.integration = integration_options_for(scene.spec.simulation);
+    const SpeedRampResult run =
+        run_speed_ramp(scene.model, embed_state(scene.model, r.reduced_states, first.start), ramp);
+    ASSERT_TRUE(run.vanished) << run.outcome;
+    ends.push_back(run.hunting_end_speed_m_per_s);
+    std::printf("[ vehicle  ] ramp %.1f m/s^2 from %.1f m/s: hunting ends at %.4f m/s (%.1f s CPU)\n",
+                a, first.speed_m_per_s, ends.back(), run.trajectory.stats.cpu_seconds);
+  }
+  EXPECT_LT(ends[0], ends[1]);  // the slower ramp nearer the fold
+  EXPECT_LT(ends[1], fold);     // a ramp cannot lose a stable cycle above its fold
+  const double spread = ends[1] - ends[0];
+  EXPECT_GT(fold, ends[1] + 0.67 * spread);
+  EXPECT_LT(fold, ends[1] + 1.72 * spread);
 }

@@ -28,13 +28,13 @@ int unstable_multipliers(const PeriodicOrbit& o, double tolerance) {
   return count;
 }
 
-// The non-trivial multiplier of `o` nearest the unit circle.
-std::complex<double> multiplier_nearest_unit_circle(const PeriodicOrbit& o) {
+// The non-trivial multiplier of `o` nearest the point z of the complex plane.
+std::complex<double> multiplier_nearest(const PeriodicOrbit& o, std::complex<double> z) {
   std::complex<double> best = 0.0;
   double distance = std::numeric_limits<double>::infinity();
   for (Eigen::Index k = 0; k < o.floquet_multipliers.size(); ++k) {
     if (k == o.trivial_multiplier) continue;
-    const double d = std::abs(std::abs(o.floquet_multipliers(k)) - 1.0);
+    const double d = std::abs(o.floquet_multipliers(k) - z);
     if (d < distance) distance = d, best = o.floquet_multipliers(k);
   }
   return best;
@@ -94,7 +94,7 @@ void detect_bifurcations(OrbitBranch& branch, int ia, double tolerance, double s
       b.after_orbit = k - 1;
       fold_vertex(o[size_t(k - 2)], o[size_t(k - 1)], o[size_t(k)], ia, ia, b.speed_m_per_s,
                   b.amplitude);
-      b.multiplier = multiplier_nearest_unit_circle(o[size_t(k - 1)]);
+      b.multiplier = multiplier_nearest(o[size_t(k - 1)], 1.0);
       // A fold recorded an orbit earlier from its multiplier passing +1 is
       // this one: the parabola's vertex is the better estimate of it.
       if (OrbitBifurcation* same = recent_fold(branch, k)) *same = b;
@@ -105,7 +105,7 @@ void detect_bifurcations(OrbitBranch& branch, int ia, double tolerance, double s
   // -1 or as a complex pair, or at +1 (a fold the speed's turn missed).
   const PeriodicOrbit &a = o[size_t(k - 1)], &c = o[size_t(k)];
   if (unstable_multipliers(a, tolerance) == unstable_multipliers(c, tolerance)) return;
-  const std::complex<double> mu = multiplier_nearest_unit_circle(c);
+  const std::complex<double> mu = crossing_multiplier(a, c, tolerance);
   const bool real = std::abs(mu.imag()) <= 1e-6 * std::abs(mu);
   if (real && mu.real() > 0.0) {
     // +1: a fold. Recorded above where the speed turned by more than its
@@ -120,14 +120,33 @@ void detect_bifurcations(OrbitBranch& branch, int ia, double tolerance, double s
                 : OrbitBifurcationKind::torus;
   b.after_orbit = k - 1;
   b.multiplier = mu;
-  const double ma = std::abs(multiplier_nearest_unit_circle(a)) - 1.0, mc = std::abs(mu) - 1.0;
-  const double s = ma == mc ? 0.5 : ma / (ma - mc);
+  // Where |mu| = 1 between the two orbits, linear in the moduli of the
+  // crossing multiplier and its counterpart on the other orbit (the one
+  // nearest it), kept between the two orbits.
+  const bool lost = unstable_multipliers(c, tolerance) > unstable_multipliers(a, tolerance);
+  const std::complex<double> mu_a = lost ? multiplier_nearest(a, mu) : mu;
+  const std::complex<double> mu_c = lost ? mu : multiplier_nearest(c, mu);
+  const double ma = std::abs(mu_a) - 1.0, mc = std::abs(mu_c) - 1.0;
+  const double s = ma == mc ? 0.5 : std::clamp(ma / (ma - mc), 0.0, 1.0);
   b.speed_m_per_s = a.speed_m_per_s + s * (c.speed_m_per_s - a.speed_m_per_s);
   b.amplitude = a.amplitude(ia) + s * (c.amplitude(ia) - a.amplitude(ia));
   branch.bifurcations.push_back(b);
 }
 
 }  // namespace
+
+std::complex<double> crossing_multiplier(const PeriodicOrbit& a, const PeriodicOrbit& c,
+                                         double tolerance) {
+  const PeriodicOrbit& more = unstable_multipliers(c, tolerance) >= unstable_multipliers(a, tolerance) ? c : a;
+  std::complex<double> best = 0.0;
+  double modulus = std::numeric_limits<double>::infinity();
+  for (Eigen::Index k = 0; k < more.floquet_multipliers.size(); ++k) {
+    const double m = std::abs(more.floquet_multipliers(k));
+    if (k == more.trivial_multiplier || m <= 1.0 + tolerance) continue;
+    if (m < modulus) modulus = m, best = more.floquet_multipliers(k);
+  }
+  return best;
+}
 
 OrbitBranch continue_branch(const FlowSystem& system, const OrbitCoordinates& coords,
                             std::vector<PeriodicOrbit> first_two,

@@ -69,6 +69,17 @@ struct OrbitBranch {
   double cpu_seconds = 0.0;               // the orbits' solves, the first two included
 };
 
+// The Floquet multiplier that crossed the unit circle between two orbits of
+// a branch whose counts of non-trivial multipliers outside it (|mu| > 1 +
+// tolerance) differ: of the orbit with more, its outside multiplier nearest
+// the circle. Not the multiplier nearest the circle overall: on the S1002
+// vehicle's branch a weakly damped pair at |mu| 0.996 lies nearer than the
+// real multiplier that has just passed +1 at 1.008 (its fold). Its kind
+// names the bifurcation: real > 0 a fold, real < 0 a period doubling, a
+// complex pair a torus. 0 when neither orbit has a multiplier outside.
+std::complex<double> crossing_multiplier(const PeriodicOrbit& a, const PeriodicOrbit& c,
+                                         double tolerance);
+
 // Two first orbits from the Hopf point: equilibrium `x_eq` (at V_c), the
 // critical eigenvector `q` (A q = i w0 q), and the small cycle's excursion
 // law a = amplitude_per_sqrt_speed sqrt(cycle_side (V - V_c)) of the
