@@ -1,14 +1,27 @@
 #!/usr/bin/env bash
-# The README's bifurcation diagram of the thesis bogie on S1002/UIC60: the
-# branch of flange-hunting orbits from the cycle a time-domain run settles on
-# at 41 m/s, through its fold (the nonlinear critical speed, 34.78 m/s) and
-# down the unstable orbits to 0.5 mm. About 15 min CPU (60 orbits, 6-42 s
-# each; docs/performance.md). Writes out/s1002_bifurcation and copies the PNG
-# into plots/.
+# The bifurcation diagrams of docs/nonlinear.md on S1002/UIC60, copied into
+# plots/ (the data in out/s1002_bifurcation_<which>):
+#   bogie   (the default) the thesis bogie's branch of flange-hunting orbits
+#           from the cycle a run settles on at 41 m/s, through its fold (the
+#           nonlinear critical speed, 35.02 m/s) and down the unstable
+#           orbits; about 10 min CPU (53 orbits; docs/performance.md);
+#   vehicle the thesis vehicle's branch from the cycle at 77 m/s through its
+#           fold (75.89 m/s) and up the unstable orbits to 104 m/s; about
+#           6.5 min CPU (40 orbits).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-out=out/s1002_bifurcation
-./build/railstab bifurcation cases/thesis_bogie_s1002_tangent.toml --from 20 --to 50 \
-  --max-amplitude 0.008 --cycle-speed 41 --no-hopf-branch --max-orbits 60 --out "$out"
+which=${1:-bogie}
+out=out/s1002_bifurcation_$which
+case "$which" in
+  bogie)
+    ./build/railstab bifurcation cases/thesis_bogie_s1002_tangent.toml --from 20 --to 50 \
+      --max-amplitude 0.008 --cycle-speed 41 --no-hopf-branch --max-orbits 60 --out "$out"
+    stem=thesis_bogie_s1002_tangent ;;
+  vehicle)
+    ./build/railstab bifurcation cases/thesis_vehicle_s1002_tangent.toml --from 60 --to 120 \
+      --max-amplitude 0.008 --cycle-speed 77 --no-hopf-branch --max-orbits 40 --out "$out"
+    stem=thesis_vehicle_s1002_tangent ;;
+  *) echo "usage: $0 [bogie|vehicle]" >&2; exit 2 ;;
+esac
 mkdir -p plots
-cp "$out/thesis_bogie_s1002_tangent_bifurcation_diagram.png" plots/
+cp "$out/${stem}_bifurcation_diagram.png" plots/
