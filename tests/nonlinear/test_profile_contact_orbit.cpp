@@ -145,13 +145,18 @@ TEST(ProfileContactOrbit, S1002VehicleFoldLiesWhereItsRampsTendAtZeroRate) {
   // The fold comes after the 6th orbit (75.8925, 75.8924, 75.8931 m/s; the
   // 7th orbit's real multiplier 1.008 past +1): 8 orbits, about 90 s CPU.
   o.continuation.max_orbits = 8;
-  o.progress = [](const std::string& line) { std::printf("[ vehicle  ] %s\n", line.c_str()); };
+  int failure_lines = 0;
+  o.progress = [&failure_lines](const std::string& line) {
+    std::printf("[ vehicle  ] %s\n", line.c_str());
+    failure_lines += line.find("corrector failed") != std::string::npos;
+  };
   const BifurcationResult r =
       analyse_bifurcation(scene.model, scene.equilibrium.state, scene.speed_m_per_s, o);
   ASSERT_TRUE(r.linear.critical_speed_found);
   ASSERT_EQ(r.branches.size(), 1u);
   ASSERT_TRUE(r.branches[0].error.empty()) << r.branches[0].error;
   const OrbitBranch& branch = r.branches[0].branch;
+  EXPECT_EQ(failure_lines, branch.failed_correctors);  // each failure is said on stderr
   ASSERT_TRUE(r.nonlinear.found) << r.nonlinear.explanation;
   ASSERT_EQ(r.nonlinear.bound, StableBound::fold) << r.nonlinear.explanation;
   const double fold = r.nonlinear.speed_m_per_s;

@@ -32,6 +32,15 @@ ContinuationOptions continuation_for(const BifurcationOptions& o, const std::str
            << " Newton iterations, " << std::setprecision(2) << orbit.cpu_seconds << " s CPU";
       progress(line.str());
     };
+  if (o.progress)
+    c.corrector_failed = [progress = o.progress, origin](double step, const std::string& reason,
+                                                         double cpu_s) {
+      std::ostringstream line;
+      line << "  " << origin << " branch: corrector failed at step " << std::setprecision(3) << step
+           << " (" << reason << "; " << std::fixed << std::setprecision(2) << cpu_s
+           << " s CPU), retried with half the step";
+      progress(line.str());
+    };
   return c;
 }
 

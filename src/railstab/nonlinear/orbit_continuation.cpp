@@ -195,6 +195,7 @@ OrbitBranch continue_branch(const FlowSystem& system, const OrbitCoordinates& co
       const double T_pred = c.period_s + g * (c.period_s - p.period_s);
       const double V_pred = c.speed_m_per_s + g * (c.speed_m_per_s - p.speed_m_per_s);
       OrbitConstraint constraint{tV / sV, ta / sa, V_pred, x_pred(ia)};
+      const std::clock_t corrector_cpu0 = std::clock();
       try {
         PeriodicOrbit next = solve_periodic_orbit(system, coords, constraint, x_pred, T_pred,
                                                   V_pred, options.shooting, &c);
@@ -215,8 +216,11 @@ OrbitBranch continue_branch(const FlowSystem& system, const OrbitCoordinates& co
         if (options.progress) options.progress(int(branch.orbits.size()), branch.orbits.back());
         if (fast)
           h = std::min(options.max_step, h * options.growth_factor);
-      } catch (const ShootingFailure&) {
+      } catch (const ShootingFailure& e) {
         ++branch.failed_correctors;
+        if (options.corrector_failed)
+          options.corrector_failed(h, e.what(),
+                                   double(std::clock() - corrector_cpu0) / CLOCKS_PER_SEC);
         h /= 2.0;
       }
     }

@@ -48,6 +48,10 @@ struct ContinuationOptions {
   // Called for every orbit as it joins the branch (the first two included),
   // with its 1-based number on the branch.
   std::function<void(int orbit_number, const PeriodicOrbit& orbit)> progress;
+  // Called for every corrector that failed (its orbit is retried with half
+  // the step): the step it had (scaled arclength), why it failed, and its
+  // CPU seconds (spent without an orbit to show for them).
+  std::function<void(double step, const std::string& reason, double cpu_s)> corrector_failed;
 };
 
 enum class OrbitBifurcationKind { fold, period_doubling, torus };

@@ -229,10 +229,12 @@ PeriodicOrbit solve_periodic_orbit(const FlowSystem& system, const OrbitCoordina
         flow = shoot(x0, T, V, true);
         continue;
       }
-      throw ShootingFailure("periodic orbit: no damped Newton step at V = " + std::to_string(V) +
-                            " m/s (" + last_failure + " down to a " +
-                            std::to_string(std::ldexp(1.0, -options.max_step_halvings)) +
-                            " step)");
+      std::ostringstream msg;
+      msg << "periodic orbit: no damped Newton step at V = " << V << " m/s (" << last_failure
+          << " down to a " << std::ldexp(1.0, -options.max_step_halvings)
+          << " step; residual " << merit << " and Newton step " << step_norm
+          << " in units of the tolerance)";
+      throw ShootingFailure(msg.str());
     }
     // A converging step that had to be shortened (its flow failed at the
     // full step) did not reach the corrected point: iterate on.
