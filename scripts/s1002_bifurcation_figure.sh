@@ -5,9 +5,10 @@
 #           from the cycle a run settles on at 41 m/s, through its fold (the
 #           nonlinear critical speed, 35.02 m/s) and down the unstable
 #           orbits; about 10 min CPU (53 orbits; docs/performance.md);
-#   vehicle the thesis vehicle's branch from the cycle at 77 m/s through its
-#           fold (75.89 m/s) and up the unstable orbits to 104 m/s; about
-#           6.5 min CPU (40 orbits).
+#   vehicle the thesis vehicle's branch from its flange-hunting cycle at
+#           100 m/s down through its fold (75.89 m/s) and up the unstable
+#           orbits to the Hopf point (118.5 m/s); about 24 min CPU (86
+#           orbits).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 which=${1:-bogie}
@@ -18,8 +19,8 @@ case "$which" in
       --max-amplitude 0.008 --cycle-speed 41 --no-hopf-branch --max-orbits 60 --out "$out"
     stem=thesis_bogie_s1002_tangent ;;
   vehicle)
-    ./build/railstab bifurcation cases/thesis_vehicle_s1002_tangent.toml --from 60 --to 120 \
-      --max-amplitude 0.008 --cycle-speed 77 --no-hopf-branch --max-orbits 40 --out "$out"
+    ./build/railstab bifurcation cases/thesis_vehicle_s1002_tangent.toml --from 60 --to 150 \
+      --max-amplitude 0.008 --cycle-speed 100 --no-hopf-branch --max-orbits 150 --out "$out"
     stem=thesis_vehicle_s1002_tangent ;;
   *) echo "usage: $0 [bogie|vehicle]" >&2; exit 2 ;;
 esac
