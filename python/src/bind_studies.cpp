@@ -167,7 +167,8 @@ py::dict study(const std::string& scene, const std::vector<std::string>& setting
 
 py::dict bifurcation(const std::string& scene, const std::vector<std::string>& settings,
                      std::optional<double> arc_length, double from, double to, double step,
-                     std::optional<double> cycle_speed, bool hopf_branch, double max_amplitude,
+                     std::optional<double> cycle_speed, const std::string& cycle_direction,
+                     bool hopf_branch, double max_amplitude,
                      int max_orbits, const std::string& solver, double hunting_band,
                      py::object progress) {
   check_speed_grid(from, to, step);
@@ -176,7 +177,10 @@ py::dict bifurcation(const std::string& scene, const std::vector<std::string>& s
   check_in("hunting_band", hunting_band, flag_ranges::frequency_hz);
   if (max_orbits < 2 || max_orbits > 10000)
     throw std::invalid_argument("max_orbits: expected 2 to 10000, got " + std::to_string(max_orbits));
+  if (cycle_direction != "down" && cycle_direction != "up")
+    throw std::invalid_argument("cycle_direction: expected 'down' or 'up', got '" + cycle_direction + "'");
   BifurcationOptions o;
+  o.cycle_speed_step_m_per_s = cycle_direction == "up" ? 0.5 : -0.5;
   o.linear.from_m_per_s = from;
   o.linear.to_m_per_s = to;
   o.linear.grid_step_m_per_s = step;
@@ -234,7 +238,7 @@ void bind_studies(py::module_& m) {
   m.def("study", &study, arg("scene"), arg("settings"), arg("vary"), arg("from_"), arg("to"),
         arg("step"), arg("solver"), arg("hunting_band"), arg("jobs"), arg("progress"));
   m.def("bifurcation", &bifurcation, arg("scene"), arg("settings"), arg("arc_length"),
-        arg("from_"), arg("to"), arg("step"), arg("cycle_speed"), arg("hopf_branch"),
+        arg("from_"), arg("to"), arg("step"), arg("cycle_speed"), arg("cycle_direction"), arg("hopf_branch"),
         arg("max_amplitude"), arg("max_orbits"), arg("solver"), arg("hunting_band"),
         arg("progress"));
 }

@@ -78,6 +78,7 @@ def test_broken_scene_file_as_the_cli_says(cli, tmp_path):
     (lambda: railstab.study(WHEELSET, {"bodies.wheelset1.mass_kg": (1000, 2000, 500)}, jobs=0), "jobs: expected a whole number"),
     (lambda: railstab.contact_geometry(WHEELSET), "expected exactly one contact with geometry"),
     (lambda: railstab.bifurcation(WHEELSET, hopf_branch=False), "hopf_branch=False leaves no branch"),
+    (lambda: railstab.bifurcation(WHEELSET, cycle_direction="sideways"), "cycle_direction: expected 'down' or 'up'"),
 ])
 def test_arguments_out_of_range(call, words):
     with pytest.raises(railstab.InputError) as e:

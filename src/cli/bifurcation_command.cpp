@@ -20,6 +20,7 @@ namespace {
 struct BifurcationArgs : SceneCommandArgs {
   BifurcationOptions options;
   std::string solver = "auto";
+  std::string cycle_direction = "down";
   double hunting_band_hz = 20.0;
   int max_orbits = 200;
 };
@@ -49,6 +50,7 @@ void run_bifurcation(const BifurcationArgs& a) {
   o.linear.stability.solver = eigen_solver_from_name(a.solver);
   o.linear.stability.max_frequency_hz = a.hunting_band_hz;
   o.continuation.max_orbits = a.max_orbits;
+  o.cycle_speed_step_m_per_s = a.cycle_direction == "up" ? 0.5 : -0.5;
   o.progress = [](const std::string& line) { std::cerr << line << "\n"; };
   std::cerr << "bifurcation analysis of " << s.model.name << " between " << o.linear.from_m_per_s
             << " and " << o.linear.to_m_per_s << " m/s, orbit amplitudes up to "
@@ -101,6 +103,12 @@ void register_bifurcation_command(CLI::App& app) {
                   "(m/s; from the steady state with the leading wheelset displaced 5 mm, 6 s); "
                   "on profile contact the default is 1.03 x the linear critical speed")
       ->check(finite_in(flag_ranges::speed_m_per_s));
+  cmd->add_option("--cycle-direction", a->cycle_direction,
+                  "the time-domain branch is followed from its cycle down in speed (towards the "
+                  "fold below a flange-hunting cycle) or up (to higher speeds); its second orbit "
+                  "lies 0.5 m/s that way")
+      ->check(CLI::IsMember({"down", "up"}))
+      ->capture_default_str();
   cmd->add_flag("--no-cycle-branch", [a](std::int64_t) { a->options.default_cycle_start = false; },
                "on profile contact without --cycle-speed, do not start the default time-domain "
                "branch (from the cycle a run at 1.03 x the linear critical speed settles on)");

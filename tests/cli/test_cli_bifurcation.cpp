@@ -180,6 +180,7 @@ TEST(CliBifurcation, BadFlagsNameTheFlagAndWriteNothing) {
       {{"--cycle-speed", "inf"}, "--cycle-speed"},
       {{"--cycle-speed", "120", "--to", "100"}, "--cycle-speed 120 m/s must lie between --from"},
       {{"--max-orbits", "1"}, "--max-orbits"},
+      {{"--cycle-direction", "sideways"}, "--cycle-direction"},
       {{"--no-hopf-branch"}, "--no-hopf-branch leaves no branch to compute: give --cycle-speed V"},
   };
   for (const Case& c : cases) {

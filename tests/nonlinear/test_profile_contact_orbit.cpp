@@ -27,6 +27,24 @@
 
 using namespace railstab;
 
+namespace {
+
+// The bifurcation run of these tests: the linear search over [from, to] on a
+// 2.5 m/s grid, no Hopf branch (its micrometre orbits on a tabulated
+// contact), the time-domain branch up to 8 mm and max_orbits orbits.
+BifurcationOptions time_domain_branch_options(double from_m_per_s, double to_m_per_s, int max_orbits) {
+  BifurcationOptions o;
+  o.linear.from_m_per_s = from_m_per_s;
+  o.linear.to_m_per_s = to_m_per_s;
+  o.linear.grid_step_m_per_s = 2.5;
+  o.from_hopf = false;
+  o.max_amplitude_m = 0.008;
+  o.continuation.max_orbits = max_orbits;
+  return o;
+}
+
+}  // namespace
+
 TEST(ProfileContactOrbit, S1002BogieFlangeHuntingCycleIsATimeDomainSolution) {
   const PreparedScene scene = prepare_scene(std::string(RAILSTAB_CASES_DIR) +
                                                 "/thesis_bogie_s1002_tangent.toml",
@@ -90,13 +108,7 @@ TEST(ProfileContactOrbit, S1002BogieDefaultCycleStartFindsTheFlangeHuntingCycle)
   const PreparedScene scene = prepare_scene(std::string(RAILSTAB_CASES_DIR) +
                                                 "/thesis_bogie_s1002_tangent.toml",
                                             {});
-  BifurcationOptions o;
-  o.linear.from_m_per_s = 30.0;
-  o.linear.to_m_per_s = 45.0;
-  o.linear.grid_step_m_per_s = 2.5;
-  o.from_hopf = false;
-  o.max_amplitude_m = 0.008;
-  o.continuation.max_orbits = 2;
+  const BifurcationOptions o = time_domain_branch_options(30.0, 45.0, 2);
   const BifurcationResult r =
       analyse_bifurcation(scene.model, scene.equilibrium.state, scene.speed_m_per_s, o);
   ASSERT_TRUE(r.linear.critical_speed_found);
@@ -112,6 +124,33 @@ TEST(ProfileContactOrbit, S1002BogieDefaultCycleStartFindsTheFlangeHuntingCycle)
   EXPECT_NEAR(first.amplitude(r.coords.amplitude_state), 5.18e-3, 0.2e-3);
   EXPECT_NEAR(first.period_s, 0.478, 0.02 * 0.478);
   EXPECT_TRUE(first.stable);
+}
+
+// The time-domain branch followed upwards in speed (`--cycle-direction up`):
+// from the S1002 bogie's flange-hunting cycle at 41 m/s the second orbit
+// lies 0.5 m/s above it and the third above that (the branch away from its
+// fold at 35.02 m/s); the report says which way it went.
+TEST(ProfileContactOrbit, S1002BogieCycleBranchCanBeFollowedUpwards) {
+  const PreparedScene scene = prepare_scene(std::string(RAILSTAB_CASES_DIR) +
+                                                "/thesis_bogie_s1002_tangent.toml",
+                                            {});
+  BifurcationOptions o = time_domain_branch_options(30.0, 45.0, 3);
+  o.cycle_speed_m_per_s = 41.0;
+  o.cycle_speed_step_m_per_s = 0.5;
+  const BifurcationResult r =
+      analyse_bifurcation(scene.model, scene.equilibrium.state, scene.speed_m_per_s, o);
+  EXPECT_TRUE(r.cycle_branch_upwards);
+  ASSERT_EQ(r.branches.size(), 1u);
+  ASSERT_TRUE(r.branches[0].error.empty()) << r.branches[0].error;
+  const std::vector<PeriodicOrbit>& orbits = r.branches[0].branch.orbits;
+  ASSERT_EQ(orbits.size(), 3u);
+  EXPECT_NEAR(orbits[0].speed_m_per_s, 41.0, 1e-9);
+  EXPECT_NEAR(orbits[1].speed_m_per_s, 41.5, 1e-9);
+  EXPECT_GT(orbits[2].speed_m_per_s, orbits[1].speed_m_per_s);
+  for (const PeriodicOrbit& orbit : orbits) EXPECT_TRUE(orbit.stable);
+  o.cycle_speed_step_m_per_s = 0.0;  // no direction
+  EXPECT_THROW(analyse_bifurcation(scene.model, scene.equilibrium.state, scene.speed_m_per_s, o),
+               std::invalid_argument);
 }
 
 // Issue 22: the nonlinear critical speed of the thesis vehicle on S1002/UIC60
@@ -135,16 +174,11 @@ TEST(ProfileContactOrbit, S1002VehicleFoldLiesWhereItsRampsTendAtZeroRate) {
   overrides.values = {SceneValueSetting("track.segments[0].length_m", 5000.0)};
   const PreparedScene scene =
       prepare_scene(std::string(RAILSTAB_CASES_DIR) + "/thesis_vehicle_s1002_tangent.toml", overrides);
-  BifurcationOptions o;
-  o.linear.from_m_per_s = 60.0;
-  o.linear.to_m_per_s = 125.0;
-  o.linear.grid_step_m_per_s = 2.5;
-  o.from_hopf = false;
-  o.cycle_speed_m_per_s = 77.0;
-  o.max_amplitude_m = 0.008;
   // The fold comes after the 6th orbit (75.8925, 75.8924, 75.8931 m/s; the
-  // 7th orbit's real multiplier 1.008 past +1): 8 orbits, about 90 s CPU.
-  o.continuation.max_orbits = 8;
+  // 7th orbit's real multiplier 1.008 past +1): 8 orbits, about 90 s CPU
+  // (and as much again in correctors that fail near the fold).
+  BifurcationOptions o = time_domain_branch_options(60.0, 125.0, 8);
+  o.cycle_speed_m_per_s = 77.0;
   int failure_lines = 0;
   o.progress = [&failure_lines](const std::string& line) {
     std::printf("[ vehicle  ] %s\n", line.c_str());

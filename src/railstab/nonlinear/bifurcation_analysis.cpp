@@ -251,6 +251,10 @@ BifurcationResult analyse_bifurcation(const Model& model, const Eigen::VectorXd&
   if (options.cycle_speed_m_per_s > 0.0 && !(options.cycle_speed_m_per_s >= options.linear.from_m_per_s &&
                                              options.cycle_speed_m_per_s <= options.linear.to_m_per_s))
     throw std::invalid_argument("bifurcation analysis: the cycle speed must lie in the speed range");
+  if (!(options.cycle_speed_step_m_per_s != 0.0 && std::abs(options.cycle_speed_step_m_per_s) <= 5.0))
+    throw std::invalid_argument(
+        "bifurcation analysis: the time-domain branch's first speed step must be non-zero and at "
+        "most 5 m/s");
   const std::clock_t cpu0 = std::clock();
   BifurcationResult r;
   r.from_m_per_s = options.linear.from_m_per_s;
@@ -287,6 +291,7 @@ BifurcationResult analyse_bifurcation(const Model& model, const Eigen::VectorXd&
     }
   }
   r.cycle_speed_m_per_s = options.cycle_speed_m_per_s;
+  r.cycle_branch_upwards = options.cycle_speed_step_m_per_s > 0.0;
   if (!(r.cycle_speed_m_per_s > 0.0) && r.profile_contact && options.default_cycle_start) {
     const bool hopf = r.linear.critical_speed_found &&
                       r.linear.loss.kind == LossOfStabilityKind::oscillatory_crossing;

@@ -49,7 +49,11 @@ struct BifurcationOptions {
   bool default_cycle_start = true;
   double disturbance_m = 0.005;
   double settle_time_s = 6.0;
-  double cycle_speed_step_m_per_s = -0.5;  // the second orbit's speed offset (direction)
+  // The time-domain branch's second orbit: at the cycle speed plus this
+  // (m/s); its sign is the direction the branch is followed in speed first
+  // (downwards: towards the fold below a flange-hunting cycle; upwards: to
+  // higher speeds). Non-zero, |step| <= 5 m/s.
+  double cycle_speed_step_m_per_s = -0.5;
   // One line per orbit (branch, speed, amplitude, largest multiplier,
   // stability, steps, Newton iterations, CPU) and per stage.
   std::function<void(const std::string&)> progress;
@@ -120,6 +124,7 @@ struct BifurcationResult {
   // was given; where the default could not apply, why (no branch then).
   double cycle_speed_m_per_s = 0.0;
   bool cycle_speed_default = false;
+  bool cycle_branch_upwards = false;      // the sign of cycle_speed_step_m_per_s
   std::string no_default_cycle_reason;
   double cpu_seconds = 0.0;
 };

@@ -115,6 +115,7 @@ void write_json(std::ostream& out, const Model& model, const BifurcationResult& 
   else
     j.key("cycle_speed_m_per_s").null();
   j.field("cycle_speed_default", r.cycle_speed_default);
+  j.field("cycle_direction", std::string(r.cycle_branch_upwards ? "up" : "down"));
   if (r.no_default_cycle_reason.empty())
     j.key("no_cycle_branch_reason").null();
   else
@@ -413,6 +414,7 @@ void write_markdown(std::ostream& md, const Model& model, const BifurcationResul
       if (r.cycle_speed_default)
         md << " (the default start on profile contact: " << kDefaultCycleSpeedRatio
            << " x the linear critical speed)";
+      md << ", followed " << (r.cycle_branch_upwards ? "upwards" : "downwards") << " in speed first";
     }
     md << "\n\n";
     if (!b.error.empty()) {
