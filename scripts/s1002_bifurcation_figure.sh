@@ -3,11 +3,11 @@
 # plots/ (the data in out/s1002_bifurcation_<which>):
 #   bogie   (the default) the thesis bogie's branch of flange-hunting orbits
 #           from the cycle a run settles on at 41 m/s, through its fold (the
-#           nonlinear critical speed, 35.02 m/s) and down the unstable
-#           orbits; about 10 min CPU (53 orbits; docs/performance.md);
+#           nonlinear critical speed, 34.99 m/s) and down the unstable
+#           orbits; about 3.5 min CPU (17 orbits; docs/performance.md);
 #   vehicle the thesis vehicle's branch from its flange-hunting cycle at
 #           100 m/s down through its fold (75.89 m/s) and up the unstable
-#           orbits to the Hopf point (118.5 m/s); about 24 min CPU (86
+#           orbits to the Hopf point (118.5 m/s); about 18 min CPU (69
 #           orbits).
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -443,8 +443,8 @@ def study(scene, vary, set=None, *, from_=5.0, to=150.0, step=2.5, solver="auto"
 
 
 def bifurcation(scene, set=None, *, from_=5.0, to=150.0, step=2.5, cycle_speed=None,
-                cycle_direction="down", hopf_branch=True, max_amplitude=0.01, max_orbits=200,
-                solver="auto", hunting_band=20.0, arc_length=None, progress=None):
+                cycle_direction="down", hopf_branch=True, stop_at_fold=False, max_amplitude=0.01,
+                max_orbits=200, solver="auto", hunting_band=20.0, arc_length=None, progress=None):
     """Periodic hunting orbits and the nonlinear critical speed: ``railstab bifurcation``.
 
     Returns the bifurcation JSON as a Result (``branches``: each branch with
@@ -453,7 +453,7 @@ def bifurcation(scene, set=None, *, from_=5.0, to=150.0, step=2.5, cycle_speed=N
     """
     path, settings = _scene_and_settings(scene, set)
     out = _railstab.bifurcation(path, settings, arc_length, from_, to, step, cycle_speed,
-                                cycle_direction, bool(hopf_branch), max_amplitude,
+                                cycle_direction, bool(hopf_branch), bool(stop_at_fold), max_amplitude,
                                 int(max_orbits), solver, hunting_band, progress)
     r = _result(out)
     r.orbits = _table(out["csv"])

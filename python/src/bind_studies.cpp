@@ -168,7 +168,7 @@ py::dict study(const std::string& scene, const std::vector<std::string>& setting
 py::dict bifurcation(const std::string& scene, const std::vector<std::string>& settings,
                      std::optional<double> arc_length, double from, double to, double step,
                      std::optional<double> cycle_speed, const std::string& cycle_direction,
-                     bool hopf_branch, double max_amplitude,
+                     bool hopf_branch, bool stop_at_fold, double max_amplitude,
                      int max_orbits, const std::string& solver, double hunting_band,
                      py::object progress) {
   check_speed_grid(from, to, step);
@@ -196,6 +196,7 @@ py::dict bifurcation(const std::string& scene, const std::vector<std::string>& s
   o.linear.stability.solver = solver_named(solver);
   o.linear.stability.max_frequency_hz = hunting_band;
   o.continuation.max_orbits = max_orbits;
+  o.continuation.stop_at_first_fold = stop_at_fold;
   const SceneOverrides overrides = scene_overrides(settings, std::nullopt, arc_length);
   ProgressRelay relay(progress);
   o.progress = relay.lines();
@@ -239,6 +240,7 @@ void bind_studies(py::module_& m) {
         arg("step"), arg("solver"), arg("hunting_band"), arg("jobs"), arg("progress"));
   m.def("bifurcation", &bifurcation, arg("scene"), arg("settings"), arg("arc_length"),
         arg("from_"), arg("to"), arg("step"), arg("cycle_speed"), arg("cycle_direction"), arg("hopf_branch"),
+        arg("stop_at_fold"),
         arg("max_amplitude"), arg("max_orbits"), arg("solver"), arg("hunting_band"),
         arg("progress"));
 }

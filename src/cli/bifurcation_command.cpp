@@ -120,6 +120,10 @@ void register_bifurcation_command(CLI::App& app) {
                   "stop a branch where the leading wheelset's lateral amplitude exceeds this (m)")
       ->capture_default_str()
       ->check(finite_in(flag_ranges::orbit_amplitude_m));
+  cmd->add_flag("--stop-at-fold",
+               [a](std::int64_t) { a->options.continuation.stop_at_first_fold = true; },
+               "stop each branch two orbits past its first fold (the nonlinear critical speed "
+               "where its stable orbits end there) instead of following it on");
   cmd->add_option("--max-orbits", a->max_orbits, "stop a branch after this many orbits")
       ->capture_default_str()
       ->check(CLI::Range(2, 10000));

@@ -239,6 +239,15 @@ TEST(OrbitContinuationBautin, BranchFromTheHopfPointGoesRoundTheFold) {
   std::printf("[ bautin   ] %zu orbits, %d failed correctors, fold at %.6f (exact %.6f), CPU %.2f s\n",
               b.orbits.size(), b.failed_correctors, b.bifurcations[0].speed_m_per_s,
               kHopfSpeed - 0.25, b.cpu_seconds);
+
+  // Stopped at the first fold: the same fold, two orbits past it, no more.
+  opt.stop_at_first_fold = true;
+  const OrbitBranch short_branch = continue_from_hopf(s, kNormalFormCoords, start, 0.05, opt);
+  EXPECT_EQ(short_branch.stop_reason, "stopped past the first fold (stop at fold)");
+  ASSERT_EQ(short_branch.bifurcations.size(), 1u);
+  EXPECT_EQ(short_branch.orbits.size(), size_t(short_branch.bifurcations[0].after_orbit) + 3);
+  EXPECT_LT(short_branch.orbits.size(), b.orbits.size());
+  EXPECT_NEAR(short_branch.bifurcations[0].speed_m_per_s, b.bifurcations[0].speed_m_per_s, 1e-12);
 }
 
 // A fold whose turn in speed is below the continuation's speed resolution

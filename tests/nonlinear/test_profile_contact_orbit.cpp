@@ -129,7 +129,7 @@ TEST(ProfileContactOrbit, S1002BogieDefaultCycleStartFindsTheFlangeHuntingCycle)
 // The time-domain branch followed upwards in speed (`--cycle-direction up`):
 // from the S1002 bogie's flange-hunting cycle at 41 m/s the second orbit
 // lies 0.5 m/s above it and the third above that (the branch away from its
-// fold at 35.02 m/s); the report says which way it went.
+// fold at 34.99 m/s); the report says which way it went.
 TEST(ProfileContactOrbit, S1002BogieCycleBranchCanBeFollowedUpwards) {
   const PreparedScene scene = prepare_scene(std::string(RAILSTAB_CASES_DIR) +
                                                 "/thesis_bogie_s1002_tangent.toml",
@@ -168,17 +168,17 @@ TEST(ProfileContactOrbit, S1002BogieCycleBranchCanBeFollowedUpwards) {
 // i.e. in [V2 + 0.67 (V2 - V1), V2 + 1.72 (V2 - V1)] for a2/a1 = 0.4: the
 // "spread of the ramp method at two rates" the fold must lie in. No number of
 // either method is put in: both are computed here. (The same bracket holds on
-// the thesis bogie: ramps 30.36 / 32.33 m/s, bracket 33.6-35.7, fold 35.02.)
+// the thesis bogie: ramps 30.36 / 32.33 m/s, bracket 33.6-35.7, fold 34.99.)
 TEST(ProfileContactOrbit, S1002VehicleFoldLiesWhereItsRampsTendAtZeroRate) {
   SceneOverrides overrides;
   overrides.values = {SceneValueSetting("track.segments[0].length_m", 5000.0)};
   const PreparedScene scene =
       prepare_scene(std::string(RAILSTAB_CASES_DIR) + "/thesis_vehicle_s1002_tangent.toml", overrides);
-  // The fold comes after the 6th orbit (75.8925, 75.8924, 75.8931 m/s; the
-  // 7th orbit's real multiplier 1.008 past +1): 8 orbits, about 90 s CPU
-  // (and as much again in correctors that fail near the fold).
-  BifurcationOptions o = time_domain_branch_options(60.0, 125.0, 8);
+  // The fold comes after 6-8 orbits, each 3-15 s CPU, and correctors that
+  // fail near it cost as much again; the branch stops two orbits past it.
+  BifurcationOptions o = time_domain_branch_options(60.0, 125.0, 16);
   o.cycle_speed_m_per_s = 77.0;
+  o.continuation.stop_at_first_fold = true;
   int failure_lines = 0;
   o.progress = [&failure_lines](const std::string& line) {
     std::printf("[ vehicle  ] %s\n", line.c_str());
@@ -190,6 +190,7 @@ TEST(ProfileContactOrbit, S1002VehicleFoldLiesWhereItsRampsTendAtZeroRate) {
   ASSERT_EQ(r.branches.size(), 1u);
   ASSERT_TRUE(r.branches[0].error.empty()) << r.branches[0].error;
   const OrbitBranch& branch = r.branches[0].branch;
+  EXPECT_EQ(branch.stop_reason, "stopped past the first fold (stop at fold)");
   EXPECT_EQ(failure_lines, branch.failed_correctors);  // each failure is said on stderr
   ASSERT_TRUE(r.nonlinear.found) << r.nonlinear.explanation;
   ASSERT_EQ(r.nonlinear.bound, StableBound::fold) << r.nonlinear.explanation;

@@ -26,7 +26,7 @@ namespace railstab {
 
 // 1.03: on the thesis bogie on S1002/UIC60 (V_c 39.80 m/s) a run from 5 mm
 // at 41 m/s settles on the flange-hunting cycle whose branch folds at
-// 35.02 m/s; at 36 m/s (below V_c) the same start decays.
+// 34.99 m/s; at 36 m/s (below V_c) the same start decays.
 inline constexpr double kDefaultCycleSpeedRatio = 1.03;
 
 struct BifurcationOptions {

@@ -178,6 +178,10 @@ OrbitBranch continue_branch(const FlowSystem& system, const OrbitCoordinates& co
     const PeriodicOrbit& c = branch.orbits.back();
     const PeriodicOrbit& p = branch.orbits[branch.orbits.size() - 2];
     if (int(branch.orbits.size()) >= options.max_orbits) return finish("orbit limit reached");
+    if (options.stop_at_first_fold)
+      for (const OrbitBifurcation& f : branch.bifurcations)
+        if (f.kind == OrbitBifurcationKind::fold && branch.orbits.size() >= size_t(f.after_orbit) + 3)
+          return finish("stopped past the first fold (stop at fold)");
     if (c.speed_m_per_s < options.min_speed_m_per_s) return finish("below the speed range");
     if (c.speed_m_per_s > options.max_speed_m_per_s) return finish("above the speed range");
     if (c.amplitude(ia) > options.max_amplitude) return finish("amplitude limit reached");
@@ -208,9 +212,16 @@ OrbitBranch continue_branch(const FlowSystem& system, const OrbitCoordinates& co
         // Fast: few iterations, or cheap chord iterations that needed fresh
         // derivatives at most once before the converged orbit's (the
         // refresh on reaching the stagnation range is the usual one).
+        // Or a predictor that was nearly right: the corrected orbit within
+        // straight_predictor_error of the step from the secant's prediction
+        // in the scaled plane (a straight stretch of the branch, where the
+        // iterations are the chord's and the flow's, not the curvature's).
+        const double predictor_error =
+            std::hypot((next.speed_m_per_s - V_pred) / sV, (next.start(ia) - x_pred(ia)) / sa) / h;
         const bool fast = iterations <= options.fast_newton_iterations ||
                           (next.sensitivity_flows <= 2 &&
-                           iterations <= 3 * options.fast_newton_iterations);
+                           iterations <= 3 * options.fast_newton_iterations) ||
+                          predictor_error <= options.straight_predictor_error;
         branch.orbits.push_back(std::move(next));
         accepted = true;
         if (options.progress) options.progress(int(branch.orbits.size()), branch.orbits.back());
@@ -224,10 +235,13 @@ OrbitBranch continue_branch(const FlowSystem& system, const OrbitCoordinates& co
         h /= 2.0;
       }
     }
-    detect();
+    // An orbit shrunk to nothing is the steady state, whose multipliers past
+    // the Hopf point (exp(lambda T) of its unstable pair) would read as a
+    // torus point: the branch ends there, with no bifurcation against it.
     if (branch.orbits.back().amplitude(ia) < 1e-3 * options.amplitude_scale &&
         branch.orbits.back().amplitude(ia) < branch.orbits[branch.orbits.size() - 2].amplitude(ia))
       return finish("back at the steady state (the orbit shrank to zero)");
+    detect();
   }
 }
 

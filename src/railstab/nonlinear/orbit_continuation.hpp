@@ -15,7 +15,9 @@
 // speed) is a regular point of this plane's curve, so the branch goes
 // round it; so is a fold in a, as long as the two do not coincide.
 // Step control: the step grows by growth_factor after a corrector that
-// converged in <= fast_newton_iterations, halves after a failure, and the
+// converged in <= fast_newton_iterations (or whose orbit lay within
+// straight_predictor_error x the step of the prediction), halves after a
+// failure, and the
 // run stops below min_step.
 //
 // The branch starts from an orbit of small excursion near the Hopf point
@@ -41,10 +43,17 @@ struct ContinuationOptions {
   double max_step = 2.0;
   double growth_factor = 1.5;
   int fast_newton_iterations = 3;
+  // The step also grows after a corrector that moved the orbit by at most
+  // this fraction of the step from the secant's prediction (scaled plane).
+  double straight_predictor_error = 0.05;
   int max_orbits = 200;
   double min_speed_m_per_s = 0.0;         // stop outside [min, max]
   double max_speed_m_per_s = 1e9;
   double max_amplitude = 1e9;             // stop when the excursion exceeds it (flange climbing)
+  // Stop two orbits past the branch's first fold (enough for the fold's
+  // parabola through the orbits around it): the nonlinear critical speed
+  // without the rest of the branch.
+  bool stop_at_first_fold = false;
   // Called for every orbit as it joins the branch (the first two included),
   // with its 1-based number on the branch.
   std::function<void(int orbit_number, const PeriodicOrbit& orbit)> progress;
