@@ -177,10 +177,8 @@ py::dict bifurcation(const std::string& scene, const std::vector<std::string>& s
   check_in("hunting_band", hunting_band, flag_ranges::frequency_hz);
   if (max_orbits < 2 || max_orbits > 10000)
     throw std::invalid_argument("max_orbits: expected 2 to 10000, got " + std::to_string(max_orbits));
-  if (cycle_direction != "down" && cycle_direction != "up")
-    throw std::invalid_argument("cycle_direction: expected 'down' or 'up', got '" + cycle_direction + "'");
   BifurcationOptions o;
-  o.cycle_speed_step_m_per_s = cycle_direction == "up" ? 0.5 : -0.5;
+  o.cycle_speed_step_m_per_s = cycle_speed_step_for(cycle_direction, "cycle_direction");
   o.linear.from_m_per_s = from;
   o.linear.to_m_per_s = to;
   o.linear.grid_step_m_per_s = step;

@@ -50,7 +50,7 @@ void run_bifurcation(const BifurcationArgs& a) {
   o.linear.stability.solver = eigen_solver_from_name(a.solver);
   o.linear.stability.max_frequency_hz = a.hunting_band_hz;
   o.continuation.max_orbits = a.max_orbits;
-  o.cycle_speed_step_m_per_s = a.cycle_direction == "up" ? 0.5 : -0.5;
+  o.cycle_speed_step_m_per_s = cycle_speed_step_for(a.cycle_direction, "--cycle-direction");
   o.progress = [](const std::string& line) { std::cerr << line << "\n"; };
   std::cerr << "bifurcation analysis of " << s.model.name << " between " << o.linear.from_m_per_s
             << " and " << o.linear.to_m_per_s << " m/s, orbit amplitudes up to "

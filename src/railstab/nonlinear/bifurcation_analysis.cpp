@@ -242,6 +242,12 @@ bool starts_a_branch(const Model& model, const BifurcationOptions& options) {
          (options.default_cycle_start && has_profile_contact(model));
 }
 
+double cycle_speed_step_for(const std::string& direction, const std::string& option) {
+  if (direction == "down") return -0.5;
+  if (direction == "up") return 0.5;
+  throw std::invalid_argument(option + ": expected 'down' or 'up', got '" + direction + "'");
+}
+
 BifurcationResult analyse_bifurcation(const Model& model, const Eigen::VectorXd& equilibrium,
                                       double speed_m_per_s, const BifurcationOptions& options) {
   if (!(options.linear.from_m_per_s < options.linear.to_m_per_s))

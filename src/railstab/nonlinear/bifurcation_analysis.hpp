@@ -133,6 +133,12 @@ struct BifurcationResult {
 // StableBound); `r.branches`, `r.linear` and `r.hopf_kind` set.
 NonlinearCriticalSpeed nonlinear_critical_speed(const BifurcationResult& r);
 
+// The time-domain branch's first speed step for a direction named "down"
+// or "up" (BifurcationOptions::cycle_speed_step_m_per_s): -0.5 or +0.5 m/s.
+// Throws std::invalid_argument naming `option` (the front end's flag or
+// keyword) for another name.
+double cycle_speed_step_for(const std::string& direction, const std::string& option);
+
 // Whether `options` start any branch on `model`: the Hopf branch, a given
 // cycle speed, or the profile-contact default (default_cycle_start). The
 // front ends refuse a run without one, each naming its own flags.
