@@ -136,7 +136,7 @@ TEST(ProfileContactOrbit, S1002BogieCycleBranchCanBeFollowedUpwards) {
                                             {});
   BifurcationOptions o = time_domain_branch_options(30.0, 45.0, 3);
   o.cycle_speed_m_per_s = 41.0;
-  o.cycle_speed_step_m_per_s = 0.5;
+  o.cycle_speed_step_m_per_s = cycle_speed_step_for("up", "--cycle-direction");
   const BifurcationResult r =
       analyse_bifurcation(scene.model, scene.equilibrium.state, scene.speed_m_per_s, o);
   EXPECT_TRUE(r.cycle_branch_upwards);
@@ -174,7 +174,7 @@ TEST(ProfileContactOrbit, S1002VehicleFoldLiesWhereItsRampsTendAtZeroRate) {
   overrides.values = {SceneValueSetting("track.segments[0].length_m", 5000.0)};
   const PreparedScene scene =
       prepare_scene(std::string(RAILSTAB_CASES_DIR) + "/thesis_vehicle_s1002_tangent.toml", overrides);
-  // The fold comes after 6-8 orbits, each 3-15 s CPU, and correctors that
+  // The fold comes after 6-10 orbits, each 3-15 s CPU, and correctors that
   // fail near it cost as much again; the branch stops two orbits past it.
   BifurcationOptions o = time_domain_branch_options(60.0, 125.0, 16);
   o.cycle_speed_m_per_s = 77.0;

@@ -474,9 +474,10 @@ TEST(SceneLoader, ProfileContactDefaultsToAdamsAtTighterTolerances) {
   EXPECT_EQ(profile.relative_tolerance, 1e-4);
   EXPECT_EQ(profile.absolute_tolerance, 1e-8);
   std::string with_rtol = text;
-  const size_t table = with_rtol.find("[simulation]\n");
+  const std::string table_header = "[simulation]\n";
+  const size_t table = with_rtol.find(table_header);
   ASSERT_NE(table, std::string::npos);
-  with_rtol.insert(table + 13, "relative_tolerance = 1e-5\n");
+  with_rtol.insert(table + table_header.size(), "relative_tolerance = 1e-5\n");
   const SimulationSpec given = load_scene_text(with_rtol, path).simulation;
   EXPECT_EQ(given.integrator, IntegratorKind::cvode_adams);
   EXPECT_EQ(given.relative_tolerance, 1e-5);
