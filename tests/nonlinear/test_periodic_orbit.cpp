@@ -22,6 +22,7 @@
 #include <railstab/nonlinear/model_orbits.hpp>
 #include <railstab/nonlinear/orbit_continuation.hpp>
 #include <railstab/nonlinear/periodic_orbit.hpp>
+#include <railstab/nonlinear/variational_pass.hpp>
 #include <railstab/setup/prepare_scene.hpp>
 #include <railstab/stability/speed_analysis.hpp>
 
@@ -379,9 +380,14 @@ TEST(FlowSensitivity, MonodromyAndSpeedSensitivityMatchCentralDifferencesOfTheFl
   const double cpu0 = cpu_now();
   const FlowResult exact = integrate_flow(s, x0, V, T, tight);
   const double cpu_sens = cpu_now() - cpu0;
+  // The same derivatives in a second pass along the state's recorded steps
+  // (variational_pass.hpp).
+  FlowOptions second_pass = tight;
+  second_pass.variational = FlowOptions::Variational::second_pass;
+  const FlowResult second = integrate_flow(s, x0, V, T, second_pass);
   FlowOptions plain = tight;
   plain.sensitivities = false;
-  double worst = 0.0;
+  double worst = 0.0, worst_second = 0.0;
   for (int j = 0; j < s.size; ++j) {
     // 1e-5 (m, rad, m/s, rad/s; relative for the spin rates): the spin
     // rates' integration noise (rtol 1e-11 of 44 rad/s) must stay small
@@ -397,6 +403,8 @@ TEST(FlowSensitivity, MonodromyAndSpeedSensitivityMatchCentralDifferencesOfTheFl
                                 integrate_flow(s, down, V, T, plain).end_state) / (2.0 * h);
     const double err = (fd - exact.state_sensitivity.col(j)).norm() /
                        std::max(exact.state_sensitivity.col(j).norm(), 1e-12);
+    worst_second = std::max(worst_second, (fd - second.state_sensitivity.col(j)).norm() /
+                                              std::max(second.state_sensitivity.col(j).norm(), 1e-12));
     if (err > 1e-3)
       std::printf("  column %d (%s): error %.2e, |exact| %.2e, |fd| %.2e, h %.1e\n", j,
                   s.state_names[size_t(j)].c_str(), err, exact.state_sensitivity.col(j).norm(),
@@ -407,13 +415,44 @@ TEST(FlowSensitivity, MonodromyAndSpeedSensitivityMatchCentralDifferencesOfTheFl
   const Eigen::VectorXd fdV = (integrate_flow(s, x0, V + hV, T, plain).end_state -
                                integrate_flow(s, x0, V - hV, T, plain).end_state) / (2.0 * hV);
   const double errV = (fdV - exact.speed_sensitivity).norm() / exact.speed_sensitivity.norm();
+  const double errV_second = (fdV - second.speed_sensitivity).norm() / second.speed_sensitivity.norm();
   std::printf("[ bogie    ] %d states: monodromy vs central differences %.2e (worst column), "
-              "d phi/dV %.2e; flow with sensitivities %.3f s CPU, %ld steps, %ld Jacobians\n",
-              s.size, worst, errV, cpu_sens, exact.steps, exact.jacobian_evaluations);
+              "d phi/dV %.2e; flow with sensitivities %.3f s CPU, %ld steps, %ld Jacobians; "
+              "second pass %.2e, %.2e, %.3f s CPU, %ld + %ld steps\n",
+              s.size, worst, errV, cpu_sens, exact.steps, exact.jacobian_evaluations, worst_second,
+              errV_second, second.cpu_seconds, second.steps - second.variational_steps,
+              second.variational_steps);
   // The differences' own error (truncation and noise, see the steps) is
   // the limit here, not X's (rtol 1e-9).
   EXPECT_LT(worst, 2e-3);
   EXPECT_LT(errV, 1e-5);
+  EXPECT_LT(worst_second, 2e-3);
+  EXPECT_LT(errV_second, 1e-5);
+  EXPECT_GT(second.variational_steps, 0);
+  // The state is the plain flow's (the second pass does not touch it).
+  EXPECT_EQ((second.end_state - integrate_flow(s, x0, V, T, plain).end_state).cwiseAbs().maxCoeff(), 0.0);
+}
+
+// The second pass's state between the recorded steps: cubic Hermite
+// interpolation is exact for a cubic (x = t^3 - 2 t, x' = 3 t^2 - 2, and a
+// constant), on uneven steps, at the steps' ends and clamped outside.
+TEST(FlowSensitivity, RecordedTrajectoryInterpolatesACubicExactly) {
+  RecordedTrajectory r;
+  for (double t : {0.0, 0.1, 0.35, 0.4, 1.0}) {
+    r.times_s.push_back(t);
+    r.states.push_back(Eigen::Vector2d(t * t * t - 2.0 * t, 5.0));
+    r.rates.push_back(Eigen::Vector2d(3.0 * t * t - 2.0, 0.0));
+  }
+  Eigen::VectorXd x;
+  for (double t : {0.0, 0.05, 0.1, 0.2, 0.37, 0.4, 0.99, 1.0}) {
+    r.state_at(t, x);
+    EXPECT_NEAR(x(0), t * t * t - 2.0 * t, 1e-15) << t;
+    EXPECT_NEAR(x(1), 5.0, 1e-15) << t;
+  }
+  r.state_at(1.5, x);
+  EXPECT_NEAR(x(0), -1.0, 1e-15);
+  r.state_at(-0.5, x);
+  EXPECT_NEAR(x(0), 0.0, 1e-15);
 }
 
 // The spin angles are the reduced state's only omission, and f does not

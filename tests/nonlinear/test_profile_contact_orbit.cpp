@@ -93,6 +93,26 @@ TEST(ProfileContactOrbit, S1002BogieFlangeHuntingCycleIsATimeDomainSolution) {
   // 1e-6 of the amplitude, as issue 22 asks and the knife-edge vehicle's
   // test checks (measured 5e-8).
   EXPECT_LT((back - o.start).cwiseAbs().maxCoeff(), 1e-6 * scale);
+
+  // The same orbit with the variational equations in a second pass (what
+  // the bifurcation analysis uses on profile contact): the same start and
+  // period to the flow's accuracy, the same largest multiplier to the
+  // sensitivities' tolerance (rtol 1e-5, a period's error of a few 1e-5),
+  // the trivial multiplier at 1.
+  ShootingOptions second_pass;
+  second_pass.flow.variational = FlowOptions::Variational::second_pass;
+  const PeriodicOrbit o2 = solve_periodic_orbit(system, coords, OrbitConstraint::fixed_speed(V),
+                                                guess.start, guess.period_s, V, second_pass);
+  std::printf("[ S1002    ] second pass: excursion %.6f mm, period %.8f s, |mu| %.6f (alongside "
+              "%.6f), trivial |mu - 1| %.1e, %d iterations, %.2f s CPU\n",
+              1e3 * o2.start(ia), o2.period_s, std::abs(o2.critical_multiplier),
+              std::abs(o.critical_multiplier), o2.trivial_multiplier_error, o2.newton_iterations,
+              o2.cpu_seconds);
+  EXPECT_LT((o2.start - o.start).cwiseAbs().maxCoeff(), 1e-6 * scale);
+  EXPECT_NEAR(o2.period_s, o.period_s, 1e-7 * o.period_s);
+  EXPECT_NEAR(std::abs(o2.critical_multiplier), std::abs(o.critical_multiplier), 1e-4);
+  EXPECT_LT(o2.trivial_multiplier_error, 1e-4);
+  EXPECT_TRUE(o2.stable);
 }
 
 // `bifurcation` without a cycle speed on profile contact starts the

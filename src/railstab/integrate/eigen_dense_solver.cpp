@@ -14,6 +14,7 @@ namespace {
 struct EigenDenseContent {
   explicit EigenDenseContent(long n) : lu(Eigen::Index(n)) {}
   Eigen::PartialPivLU<Eigen::MatrixXd> lu;
+  Eigen::MatrixXd block, block_solution;  // a right-hand side of n k entries, n x k
   sunindextype last_flag = 0;
 };
 
@@ -38,12 +39,24 @@ int setup(SUNLinearSolver S, SUNMatrix A) {
   return int(c.last_flag = SUNLS_SUCCESS);
 }
 
+// b of length n: one solve. b of length n k (the variational equations'
+// matrix Y, n x k column-major, whose Newton matrix is I - gamma J in every
+// column): the k columns in one blocked solve.
 int solve(SUNLinearSolver S, SUNMatrix, N_Vector x, N_Vector b, realtype) {
   EigenDenseContent& c = content(S);
-  const Eigen::Index n = N_VGetLength(b);
-  Eigen::Map<Eigen::VectorXd> xv(N_VGetArrayPointer(x), n);
-  const Eigen::Map<const Eigen::VectorXd> bv(N_VGetArrayPointer(b), n);
-  xv = c.lu.solve(bv);
+  const Eigen::Index n = c.lu.rows(), length = N_VGetLength(b);
+  if (n == 0 || length % n != 0) return int(c.last_flag = SUNLS_ILL_INPUT);
+  if (length == n) {
+    Eigen::Map<Eigen::VectorXd> xv(N_VGetArrayPointer(x), n);
+    const Eigen::Map<const Eigen::VectorXd> bv(N_VGetArrayPointer(b), n);
+    xv = c.lu.solve(bv);
+  } else {
+    // Through an Eigen-owned (aligned) copy: the blocked solve's kernels then
+    // sum in the same order whatever the N_Vector's address.
+    c.block = Eigen::Map<const Eigen::MatrixXd>(N_VGetArrayPointer(b), n, length / n);
+    c.block_solution = c.lu.solve(c.block);
+    Eigen::Map<Eigen::MatrixXd>(N_VGetArrayPointer(x), n, length / n) = c.block_solution;
+  }
   return int(c.last_flag = SUNLS_SUCCESS);
 }
 

@@ -15,8 +15,11 @@ namespace railstab {
 namespace {
 
 ContinuationOptions continuation_for(const BifurcationOptions& o, const std::string& origin,
-                                     const OrbitCoordinates& coords) {
+                                     const OrbitCoordinates& coords, bool profile_contact) {
   ContinuationOptions c = o.continuation;
+  // Profile contact: the variational equations in a second pass (see
+  // BifurcationOptions::continuation).
+  if (profile_contact) c.shooting.flow.variational = FlowOptions::Variational::second_pass;
   c.min_speed_m_per_s = o.linear.from_m_per_s;
   c.max_speed_m_per_s = o.linear.to_m_per_s;
   c.max_amplitude = o.max_amplitude_m;
@@ -61,7 +64,7 @@ BranchResult branch_from_hopf(const Model& model, const FlowSystem& system, Bifu
       r.hopf_kind = hopf_kind_name(r.hopf.kind);
     }
     b.branch = continue_from_hopf(system, r.coords, start, o.first_excursion_m,
-                                  continuation_for(o, "hopf", r.coords));
+                                  continuation_for(o, "hopf", r.coords, r.profile_contact));
     if (r.profile_contact && !b.branch.orbits.empty())
       r.hopf_kind = b.branch.orbits.front().speed_m_per_s > r.linear.critical_speed_m_per_s
                         ? "supercritical"
@@ -88,7 +91,7 @@ BranchResult branch_from_time_domain(const Model& model, const FlowSystem& syste
     }
     const OrbitGuess guess = settled_cycle_guess(model, V, eq.state, r.reduced_states, r.coords,
                                                  o.disturbance_m, o.settle_time_s);
-    const ContinuationOptions c = continuation_for(o, "time-domain", r.coords);
+    const ContinuationOptions c = continuation_for(o, "time-domain", r.coords, r.profile_contact);
     const PeriodicOrbit first = solve_periodic_orbit(system, r.coords, OrbitConstraint::fixed_speed(V),
                                                      guess.start, guess.period_s, V, c.shooting);
     b.branch = continue_from_orbit(system, r.coords, first, o.cycle_speed_step_m_per_s, c);

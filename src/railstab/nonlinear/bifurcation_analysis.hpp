@@ -31,7 +31,15 @@ inline constexpr double kDefaultCycleSpeedRatio = 1.03;
 
 struct BifurcationOptions {
   CriticalSpeedOptions linear;            // the linear search's range and grid
-  ContinuationOptions continuation;       // speed range and amplitude limit set from the run
+  // Speed range and amplitude limit set from the run. On profile contact the
+  // orbits' variational equations are integrated in a second pass
+  // (FlowOptions::Variational::second_pass: 1.7 times faster on the S1002
+  // thesis vehicle's orbits, the same multipliers to 6 digits); elsewhere
+  // as continuation.shooting.flow says (alongside: on the smooth models'
+  // small orbits near a Hopf point, whose speed is set by cubic terms to
+  // 1e-6 m/s, only the alongside flow's finer steps meet the sqrt law
+  // to 1 %, docs/nonlinear.md).
+  ContinuationOptions continuation;
   std::string wheelset;                   // whose lateral motion is the excursion ("": the first)
   double first_excursion_m = 5e-5;        // of the Hopf branch's first orbit
   double max_amplitude_m = 0.012;         // stop a branch beyond this lateral amplitude

@@ -2,6 +2,8 @@
 
 #include <railstab/integrate/dense_newton_matrix.hpp>
 #include <railstab/integrate/eigen_dense_solver.hpp>
+#include <railstab/nonlinear/cvodes_flow_support.hpp>
+#include <railstab/nonlinear/variational_pass.hpp>
 
 #include <cvodes/cvodes.h>
 #include <nvector/nvector_serial.h>
@@ -20,9 +22,9 @@ namespace railstab {
 
 namespace {
 
-Eigen::Map<Eigen::VectorXd> view(N_Vector v) {
-  return Eigen::Map<Eigen::VectorXd>(N_VGetArrayPointer(v), N_VGetLength(v));
-}
+using flow_support::check;
+using flow_support::guarded;
+using flow_support::view;
 
 // What the CVODES callbacks see. The Jacobian is cached on (t, x): the
 // staggered corrector evaluates the sensitivity right-hand sides several
@@ -51,18 +53,9 @@ struct FlowCallbackData {
   }
 };
 
-template <class F> int guarded(FlowCallbackData& d, F&& body) {
-  try {
-    return body();
-  } catch (const std::exception& e) {
-    if (d.error.empty()) d.error = e.what();
-    return 1;  // recoverable: CVODES retries with a smaller step
-  }
-}
-
 int rhs_callback(double, N_Vector y, N_Vector ydot, void* user) {
   auto& d = *static_cast<FlowCallbackData*>(user);
-  return guarded(d, [&] {
+  return guarded(d.error, [&] {
     d.x = view(y);
     d.system->rhs(d.x, d.speed, d.f);
     if (!d.f.allFinite()) throw std::runtime_error("non-finite state derivative");
@@ -74,7 +67,7 @@ int rhs_callback(double, N_Vector y, N_Vector ydot, void* user) {
 int jacobian_callback(double t, N_Vector y, N_Vector, SUNMatrix Jmat, void* user, N_Vector,
                       N_Vector, N_Vector) {
   auto& d = *static_cast<FlowCallbackData*>(user);
-  return guarded(d, [&] {
+  return guarded(d.error, [&] {
     const Eigen::MatrixXd& J = d.jacobian_at(t, view(y));
     const sunindextype n = SM_ROWS_D(Jmat);
     Eigen::Map<Eigen::MatrixXd>(SM_DATA_D(Jmat), n, n) = J;  // column-major, ldim n
@@ -86,7 +79,7 @@ int jacobian_callback(double t, N_Vector y, N_Vector, SUNMatrix Jmat, void* user
 int sensitivity_callback(int Ns, double t, N_Vector y, N_Vector, N_Vector* yS, N_Vector* ySdot,
                          void* user, N_Vector, N_Vector) {
   auto& d = *static_cast<FlowCallbackData*>(user);
-  return guarded(d, [&] {
+  return guarded(d.error, [&] {
     const Eigen::MatrixXd& J = d.jacobian_at(t, view(y));
     for (int i = 0; i < Ns; ++i) view(ySdot[i]).noalias() = J * view(yS[i]);
     if (d.dfdV_at_evaluation != d.jacobian_evaluations) {  // same (t, x) as J
@@ -98,35 +91,6 @@ int sensitivity_callback(int Ns, double t, N_Vector y, N_Vector, N_Vector* yS, N
     return 0;
   });
 }
-
-void error_handler(int, const char*, const char* function, char* msg, void* user) {
-  auto& d = *static_cast<FlowCallbackData*>(user);
-  if (d.error.empty()) d.error = std::string(function) + ": " + msg;
-}
-
-void check(int flag, const char* call) {
-  if (flag < 0) throw std::runtime_error(std::string("integrate_flow: ") + call + " failed (flag " +
-                                         std::to_string(flag) + ")");
-}
-
-// Owners of the SUNDIALS objects, freed in reverse order.
-struct CvodesRun {
-  SUNContext ctx = nullptr;
-  N_Vector y = nullptr;
-  N_Vector* yS = nullptr;
-  int Ns = 0;
-  SUNMatrix A = nullptr;
-  SUNLinearSolver LS = nullptr;
-  void* mem = nullptr;
-  ~CvodesRun() {
-    if (mem) CVodeFree(&mem);
-    if (LS) SUNLinSolFree(LS);
-    if (A) SUNMatDestroy(A);
-    if (yS) N_VDestroyVectorArray(yS, Ns);
-    if (y) N_VDestroy(y);
-    if (ctx) SUNContext_Free(&ctx);
-  }
-};
 
 }  // namespace
 
@@ -143,7 +107,7 @@ FlowResult integrate_flow(const FlowSystem& system, const Eigen::VectorXd& x0,
   data.system = &system;
   data.speed = speed_m_per_s;
 
-  CvodesRun run;
+  flow_support::CvodesRun run;
   check(SUNContext_Create(nullptr, &run.ctx), "SUNContext_Create");
   run.y = N_VNew_Serial(n, run.ctx);
   view(run.y) = x0;
@@ -156,7 +120,7 @@ FlowResult integrate_flow(const FlowSystem& system, const Eigen::VectorXd& x0,
   run.mem = CVodeCreate(CV_BDF, run.ctx);
   if (!run.y || !run.A || !run.LS || !run.mem) throw std::runtime_error("integrate_flow: out of memory");
   void* mem = run.mem;
-  check(CVodeSetErrHandlerFn(mem, error_handler, &data), "CVodeSetErrHandlerFn");
+  check(CVodeSetErrHandlerFn(mem, flow_support::keep_first_error, &data.error), "CVodeSetErrHandlerFn");
   check(CVodeInit(mem, rhs_callback, 0.0, run.y), "CVodeInit");
   check(CVodeSStolerances(mem, options.relative_tolerance, options.absolute_tolerance),
         "CVodeSStolerances");
@@ -164,7 +128,10 @@ FlowResult integrate_flow(const FlowSystem& system, const Eigen::VectorXd& x0,
   check(CVodeSetMaxNumSteps(mem, options.max_steps), "CVodeSetMaxNumSteps");
   check(CVodeSetLinearSolver(mem, run.LS, run.A), "CVodeSetLinearSolver");
   check(CVodeSetJacFn(mem, jacobian_callback), "CVodeSetJacFn");
-  if (options.sensitivities) {
+  const bool second_pass =
+      options.sensitivities && options.variational == FlowOptions::Variational::second_pass;
+  const bool alongside = options.sensitivities && !second_pass;
+  if (alongside) {
     run.Ns = n + 1;
     run.yS = N_VCloneVectorArray(run.Ns, run.y);
     for (int i = 0; i < run.Ns; ++i) N_VConst(0.0, run.yS[i]);
@@ -186,27 +153,63 @@ FlowResult integrate_flow(const FlowSystem& system, const Eigen::VectorXd& x0,
   // Never step past T (an orbit's end); samples before it are interpolated
   // (CVODES's dense output), so they do not shorten the steps.
   check(CVodeSetStopTime(mem, duration_s), "CVodeSetStopTime");
-  for (int k = 1; k <= intervals; ++k) {
-    const double t_out = k == intervals ? duration_s : duration_s * double(k) / intervals;
+  auto fail = [&](int flag) {
     double t_reached = 0.0;
-    const int flag = CVode(mem, t_out, run.y, &t_reached, CV_NORMAL);
-    if (flag < 0) {
-      CVodeGetCurrentTime(mem, &t_reached);
-      std::ostringstream msg;
-      char* name = CVodeGetReturnFlagName(flag);  // malloc'ed per call
-      msg << "integrate_flow: CVODES stopped at t = " << t_reached << " s of " << duration_s
-          << " s (" << name << ")";
-      std::free(name);
-      if (!data.error.empty()) msg << ": " << data.error;
-      throw std::runtime_error(msg.str());
+    CVodeGetCurrentTime(mem, &t_reached);
+    std::ostringstream msg;
+    char* name = CVodeGetReturnFlagName(flag);  // malloc'ed per call
+    msg << "integrate_flow: CVODES stopped at t = " << t_reached << " s of " << duration_s << " s ("
+        << name << ")";
+    std::free(name);
+    if (!data.error.empty()) msg << ": " << data.error;
+    throw std::runtime_error(msg.str());
+  };
+  auto sample_time = [&](int k) { return k == intervals ? duration_s : duration_s * double(k) / intervals; };
+  RecordedTrajectory trajectory;
+  if (!second_pass) {
+    for (int k = 1; k <= intervals; ++k) {
+      const double t_out = sample_time(k);
+      double t_reached = 0.0;
+      const int flag = CVode(mem, t_out, run.y, &t_reached, CV_NORMAL);
+      if (flag < 0) fail(flag);
+      if (options.samples > 0) {
+        out.sample_times_s.push_back(t_out);
+        out.samples.push_back(view(run.y));
+      }
     }
-    if (options.samples > 0) {
-      out.sample_times_s.push_back(t_out);
-      out.samples.push_back(view(run.y));
+  } else {
+    // Step by step: every step's end and rate recorded for the second pass,
+    // the samples interpolated within the step that holds them.
+    trajectory.times_s.push_back(0.0);
+    trajectory.states.push_back(x0);
+    trajectory.rates.emplace_back();
+    system.rhs(x0, speed_m_per_s, trajectory.rates.back());
+    N_Vector work = N_VClone(run.y);
+    if (!work) throw std::runtime_error("integrate_flow: out of memory");
+    struct Free {
+      N_Vector v;
+      ~Free() { N_VDestroy(v); }
+    } free_work{work};
+    int next_sample = 1;
+    double t = 0.0;
+    for (int flag = CV_SUCCESS; flag != CV_TSTOP_RETURN && t < duration_s;) {
+      flag = CVode(mem, duration_s, run.y, &t, CV_ONE_STEP);
+      if (flag < 0) fail(flag);
+      for (; options.samples > 0 && next_sample <= intervals && sample_time(next_sample) <= t;
+           ++next_sample) {
+        const double ts = sample_time(next_sample);
+        check(CVodeGetDky(mem, ts, 0, work), "CVodeGetDky");
+        out.sample_times_s.push_back(ts);
+        out.samples.push_back(view(work));
+      }
+      check(CVodeGetDky(mem, t, 1, work), "CVodeGetDky");
+      trajectory.times_s.push_back(t);
+      trajectory.states.push_back(view(run.y));
+      trajectory.rates.push_back(view(work));
     }
   }
   out.end_state = view(run.y);
-  if (options.sensitivities) {
+  if (alongside) {
     double t_reached = 0.0;
     check(CVodeGetSens(mem, &t_reached, run.yS), "CVodeGetSens");
     out.state_sensitivity.resize(n, n);
@@ -218,6 +221,16 @@ FlowResult integrate_flow(const FlowSystem& system, const Eigen::VectorXd& x0,
   CVodeGetNumRhsEvals(mem, &v), out.rhs_evaluations = v;
   CVodeGetNumErrTestFails(mem, &v), out.error_test_failures = v;
   out.jacobian_evaluations = data.jacobian_evaluations;
+  if (second_pass) {
+    VariationalResult pass = integrate_variational_equations(system, trajectory, speed_m_per_s, options);
+    out.state_sensitivity = std::move(pass.state_sensitivity);
+    out.speed_sensitivity = std::move(pass.speed_sensitivity);
+    out.variational_steps = pass.steps;
+    out.steps += pass.steps;
+    out.rhs_evaluations += pass.rhs_evaluations;
+    out.jacobian_evaluations += pass.jacobian_evaluations;
+    out.error_test_failures += pass.error_test_failures;
+  }
   out.cpu_seconds = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
   return out;
 }
