@@ -251,6 +251,53 @@ TEST(OrbitContinuationBautin, BranchFromTheHopfPointGoesRoundTheFold) {
   EXPECT_NEAR(short_branch.bifurcations[0].speed_m_per_s, b.bifurcations[0].speed_m_per_s, 1e-12);
 }
 
+// A fold sharp in the scaled plane: with the excursion scaled by 10 (100
+// times the radius), the secant near the fold points along V and its
+// predictions go past the fold's speed, where the plane's corrector has no
+// orbit to find. The fixed-excursion step after a failure
+// (ContinuationOptions::excursion_step_after_failure) crosses the fold
+// instead of halving the step down to it: every orbit on the closed form,
+// round the fold in fewer orbits than without it, the fold at alpha = -1/4
+// from the parabola V(a) through three orbits (within 1e-2: the orbits round
+// it lie 0.2-0.3 apart in r^2, and the vertex's error is third order in
+// that).
+TEST(OrbitContinuationBautin, FixedExcursionStepCrossesAFoldTooSharpForThePlane) {
+  const FlowSystem s = normal_form(true);
+  const HopfStart start = bautin_hopf_start();
+  ContinuationOptions opt;
+  opt.shooting = tight_shooting();
+  opt.amplitude_scale = 10.0;
+  opt.initial_step = 0.05;
+  opt.max_step = 0.2;
+  opt.max_amplitude = 1.1;
+  opt.max_orbits = 40;
+  const OrbitBranch b = continue_from_hopf(s, kNormalFormCoords, start, 0.05, opt);
+  double r2_max = 0.0;
+  for (const PeriodicOrbit& o : b.orbits) {
+    const double r2 = o.start(0) * o.start(0);
+    EXPECT_NEAR(o.speed_m_per_s - kHopfSpeed, r2 * r2 - r2, 1e-8) << "r^2 = " << r2;
+    r2_max = std::max(r2_max, r2);
+  }
+  std::printf("[ bautin   ] sharp fold: %zu orbits, %d failed correctors, largest r^2 %.3f, %s\n",
+              b.orbits.size(), b.failed_correctors, r2_max, b.stop_reason.c_str());
+  EXPECT_GT(b.failed_correctors, 0);  // the plane's corrector did fail
+  EXPECT_GT(r2_max, 0.6);             // round the fold (r^2 = 1/2)
+  ASSERT_EQ(b.bifurcations.size(), 1u);
+  EXPECT_EQ(b.bifurcations[0].kind, OrbitBifurcationKind::fold);
+  EXPECT_NEAR(b.bifurcations[0].speed_m_per_s, kHopfSpeed - 0.25, 1e-2);
+
+  opt.excursion_step_after_failure = false;
+  const OrbitBranch without = continue_from_hopf(s, kNormalFormCoords, start, 0.05, opt);
+  ASSERT_EQ(without.bifurcations.size(), 1u);
+  std::printf("[ bautin   ] without the fixed-excursion step: %zu orbits, %d failed correctors, "
+              "fold at %.6f; with it %.6f (exact %.6f)\n",
+              without.orbits.size(), without.failed_correctors,
+              without.bifurcations[0].speed_m_per_s, b.bifurcations[0].speed_m_per_s,
+              kHopfSpeed - 0.25);
+  EXPECT_EQ(without.stop_reason, b.stop_reason);
+  EXPECT_LT(b.orbits.size(), without.orbits.size());
+}
+
 // A fold whose turn in speed is below the continuation's speed resolution
 // (10 x the Newton tolerance x V: here 10 x 2e-3 x 10 = 0.2 m/s, larger than
 // the speed steps round the vertex) is still found, by the real multiplier

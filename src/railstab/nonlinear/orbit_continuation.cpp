@@ -232,6 +232,29 @@ OrbitBranch continue_branch(const FlowSystem& system, const OrbitCoordinates& co
         if (options.corrector_failed)
           options.corrector_failed(h, e.what(),
                                    double(std::clock() - corrector_cpu0) / CLOCKS_PER_SEC);
+        // Then the same step's excursion alone, at fixed excursion (see the
+        // header): the way through a fold in V too sharp for the plane's
+        // condition.
+        if (options.excursion_step_after_failure && ta != 0.0) {
+          const double a_next = c.start(ia) + h * ta * sa;
+          const double g = (a_next - c.start(ia)) / (c.start(ia) - p.start(ia));
+          const std::clock_t excursion_cpu0 = std::clock();
+          try {
+            PeriodicOrbit next = solve_periodic_orbit(
+                system, coords, OrbitConstraint::fixed_excursion(a_next),
+                c.start + g * (c.start - p.start), c.period_s + g * (c.period_s - p.period_s),
+                c.speed_m_per_s + g * (c.speed_m_per_s - p.speed_m_per_s), options.shooting, &c);
+            branch.orbits.push_back(std::move(next));
+            accepted = true;
+            if (options.progress) options.progress(int(branch.orbits.size()), branch.orbits.back());
+            continue;
+          } catch (const ShootingFailure& e2) {
+            ++branch.failed_correctors;
+            if (options.corrector_failed)
+              options.corrector_failed(h, std::string("at fixed excursion: ") + e2.what(),
+                                       double(std::clock() - excursion_cpu0) / CLOCKS_PER_SEC);
+          }
+        }
         h /= 2.0;
       }
     }

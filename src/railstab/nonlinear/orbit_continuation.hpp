@@ -14,6 +14,11 @@
 // unit secant in the scaled plane. A fold in V (the nonlinear critical
 // speed) is a regular point of this plane's curve, so the branch goes
 // round it; so is a fold in a, as long as the two do not coincide.
+// Near a fold in V that is sharp in the scaled plane (the S1002 vehicle's:
+// the branch turns within 0.005 mm of excursion), predictions go past the
+// fold and correctors fail; after a failure the step's change of the
+// excursion alone is tried at fixed excursion, which is well posed through
+// a fold in V (V a function of a there), before the step is halved.
 // Step control: the step grows by growth_factor after a corrector that
 // converged in <= fast_newton_iterations (or whose orbit lay within
 // straight_predictor_error x the step of the prediction), halves after a
@@ -42,6 +47,10 @@ struct ContinuationOptions {
   double min_step = 1e-3;
   double max_step = 2.0;
   double growth_factor = 1.5;
+  // After a corrector fails, the same step's change of the excursion alone
+  // is tried at fixed excursion (a = a_k + h t_a s_a, every other unknown
+  // free; the secant's values there the guess) before the step is halved.
+  bool excursion_step_after_failure = true;
   int fast_newton_iterations = 3;
   // The step also grows after a corrector that moved the orbit by at most
   // this fraction of the step from the secant's prediction (scaled plane).
