@@ -209,6 +209,7 @@ FlowResult integrate_flow(const FlowSystem& system, const Eigen::VectorXd& x0,
     }
   }
   out.end_state = view(run.y);
+  if (options.sensitivities) out.sensitivity_relative_tolerance = options.sensitivity_relative_tolerance;
   if (alongside) {
     double t_reached = 0.0;
     check(CVodeGetSens(mem, &t_reached, run.yS), "CVodeGetSens");

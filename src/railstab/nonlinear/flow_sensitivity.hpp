@@ -66,6 +66,7 @@ struct FlowResult {
   Eigen::VectorXd end_state;              // phi(T; x0, V)
   Eigen::MatrixXd state_sensitivity;      // X(T) = d phi / d x0 (empty without sensitivities)
   Eigen::VectorXd speed_sensitivity;      // s_V(T) = d phi / dV
+  double sensitivity_relative_tolerance = 0.0;  // theirs (0 without sensitivities)
   std::vector<double> sample_times_s;     // 0, T/samples, ..., T
   std::vector<Eigen::VectorXd> samples;
   // Summed over the state and (second_pass) the variational equations' run.

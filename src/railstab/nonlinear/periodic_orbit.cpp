@@ -86,9 +86,21 @@ PeriodicOrbit solve_periodic_orbit(const FlowSystem& system, const OrbitCoordina
   PeriodicOrbit orbit;
   // One flow over the period from x at speed V, with or without the
   // variational equations; its work added to the orbit's.
-  auto shoot = [&](const Eigen::VectorXd& x, double period, double speed, bool sensitivities) {
+  // With the variational equations in a second pass, a flow whose
+  // derivatives only feed Newton's matrix takes them at the looser
+  // newton_matrix_sensitivity_tolerance (the state's flow is unchanged:
+  // only Newton's path to the orbit is); the converging step's flow (the
+  // multipliers) and the retry of a step that found no damped Newton step
+  // at the flow's own (full_accuracy).
+  auto shoot = [&](const Eigen::VectorXd& x, double period, double speed, bool sensitivities,
+                   bool full_accuracy = false) {
     FlowOptions flow_options = options.flow;
     flow_options.sensitivities = sensitivities;
+    if (sensitivities && !full_accuracy &&
+        flow_options.variational == FlowOptions::Variational::second_pass)
+      flow_options.sensitivity_relative_tolerance =
+          std::max(flow_options.sensitivity_relative_tolerance,
+                   options.newton_matrix_sensitivity_tolerance);
     flow_options.samples = options.samples_per_period;
     FlowResult flow;
     try {
@@ -206,7 +218,7 @@ PeriodicOrbit solve_periodic_orbit(const FlowSystem& system, const OrbitCoordina
       }
       FlowResult trial;
       try {
-        trial = shoot(x_trial, T_trial, V_trial, trial_sensitivities);
+        trial = shoot(x_trial, T_trial, V_trial, trial_sensitivities, /*full_accuracy=*/converged);
       } catch (const ShootingFailure& e) {
         last_failure = e.what();
         continue;
@@ -224,9 +236,10 @@ PeriodicOrbit solve_periodic_orbit(const FlowSystem& system, const OrbitCoordina
       accepted = true;
     }
     if (!accepted) {
-      // A chord matrix may point the wrong way: retry with the exact one.
-      if (!exact) {
-        flow = shoot(x0, T, V, true);
+      // A chord matrix, or one from derivatives at the looser tolerance, may
+      // point the wrong way: retry with the exact one at the flow's own.
+      if (!exact || flow.sensitivity_relative_tolerance > options.flow.sensitivity_relative_tolerance) {
+        flow = shoot(x0, T, V, true, /*full_accuracy=*/true);
         continue;
       }
       std::ostringstream msg;

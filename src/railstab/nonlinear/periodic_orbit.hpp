@@ -84,6 +84,12 @@ struct ShootingOptions {
   // orbit (its multipliers).
   bool chord_iterations = true;
   double chord_contraction = 0.3;
+  // The variational equations' rtol in flows that only feed Newton's matrix
+  // where they are integrated in a second pass
+  // (FlowOptions::Variational::second_pass): Newton's matrix needs a few
+  // digits, and the state's flow does not depend on it. Alongside, their
+  // error test also sets the state's steps, so they keep the flow's.
+  double newton_matrix_sensitivity_tolerance = 1e-3;
   // Converged when the Newton step is below these (states: weighted RMS with
   // weights 1 / (rtol (|x0_k| + range_k) + atol), range_k the state's
   // peak-to-peak on the orbit; period and speed relative).
