@@ -199,15 +199,22 @@ HopfStart bautin_hopf_start() {
   return start;
 }
 
+// The Bautin branch's continuation: tight shooting, up to r = 1.1, with the
+// plane's excursion scale and the step's start and limit.
+ContinuationOptions bautin_continuation(double amplitude_scale, double initial_step, double max_step) {
+  ContinuationOptions opt;
+  opt.shooting = tight_shooting();
+  opt.amplitude_scale = amplitude_scale;
+  opt.initial_step = initial_step;
+  opt.max_step = max_step;
+  opt.max_amplitude = 1.1;
+  return opt;
+}
+
 TEST(OrbitContinuationBautin, BranchFromTheHopfPointGoesRoundTheFold) {
   const FlowSystem s = normal_form(true);
   const HopfStart start = bautin_hopf_start();
-  ContinuationOptions opt;
-  opt.shooting = tight_shooting();
-  opt.amplitude_scale = 0.1;
-  opt.initial_step = 0.5;
-  opt.max_step = 1.0;
-  opt.max_amplitude = 1.1;
+  ContinuationOptions opt = bautin_continuation(0.1, 0.5, 1.0);
   const OrbitBranch b = continue_from_hopf(s, kNormalFormCoords, start, 0.05, opt);
   ASSERT_GE(b.orbits.size(), 10u);
   EXPECT_EQ(b.stop_reason, "amplitude limit reached");
@@ -264,12 +271,7 @@ TEST(OrbitContinuationBautin, BranchFromTheHopfPointGoesRoundTheFold) {
 TEST(OrbitContinuationBautin, FixedExcursionStepCrossesAFoldTooSharpForThePlane) {
   const FlowSystem s = normal_form(true);
   const HopfStart start = bautin_hopf_start();
-  ContinuationOptions opt;
-  opt.shooting = tight_shooting();
-  opt.amplitude_scale = 10.0;
-  opt.initial_step = 0.05;
-  opt.max_step = 0.2;
-  opt.max_amplitude = 1.1;
+  ContinuationOptions opt = bautin_continuation(10.0, 0.05, 0.2);
   opt.max_orbits = 40;
   const OrbitBranch b = continue_from_hopf(s, kNormalFormCoords, start, 0.05, opt);
   double r2_max = 0.0;
@@ -307,13 +309,8 @@ TEST(OrbitContinuationBautin, FixedExcursionStepCrossesAFoldTooSharpForThePlane)
 TEST(OrbitContinuationBautin, FoldFlatterThanTheSpeedResolutionIsFoundByItsMultiplier) {
   const FlowSystem s = normal_form(true);
   const HopfStart start = bautin_hopf_start();
-  ContinuationOptions opt;
-  opt.shooting = tight_shooting();
+  ContinuationOptions opt = bautin_continuation(0.1, 0.5, 1.0);
   opt.shooting.newton_relative_tolerance = 2e-3;
-  opt.amplitude_scale = 0.1;
-  opt.initial_step = 0.5;
-  opt.max_step = 1.0;
-  opt.max_amplitude = 1.1;
   const OrbitBranch b = continue_from_hopf(s, kNormalFormCoords, start, 0.05, opt);
   int folds = 0;
   double fold_speed = 0.0;
