@@ -18,9 +18,9 @@
 // Why a second pass: integrated alongside the state by CVODES's sensitivity
 // module, X takes the state's steps, which the state's tight tolerance
 // chooses, and needs an AD Jacobian and n + 1 solves at every one of them
-// (about 1.3 steps per step of the state alone, one Jacobian per step
-// against one per 58 for the state alone: docs/performance.md). On its own,
-// X's steps follow X's own, looser tolerance. CVODES (BDF, orders 1-5) with
+// (the flow then takes about 1.3 times the steps of the state alone, with
+// a Jacobian at each instead of one per 58: docs/performance.md). On its
+// own, X's steps follow X's own, looser tolerance. CVODES (BDF, orders 1-5) with
 // the error test on every entry of Y at sensitivity_relative_tolerance and
 // sensitivity_absolute_tolerance; its Newton matrix is I - gamma J in every
 // column, so one n x n LU serves all n + 1 columns in a blocked solve
