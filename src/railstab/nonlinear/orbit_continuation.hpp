@@ -51,6 +51,10 @@ struct ContinuationOptions {
   // is tried at fixed excursion (a = a_k + h t_a s_a, every other unknown
   // free; the secant's values there the guess) before the step is halved.
   bool excursion_step_after_failure = true;
+  // A fold found from the speed's turn is refined by one more orbit at fixed
+  // excursion at its parabola's vertex, and the vertex through that orbit
+  // and its neighbours (the orbit is not added to the branch).
+  bool refine_folds = true;
   int fast_newton_iterations = 3;
   // The step also grows after a corrector that moved the orbit by at most
   // this fraction of the step from the secant's prediction (scaled plane).
