@@ -287,6 +287,8 @@ const std::vector<SceneMistake> kSceneMistakes = {
      {"track.segments[1]:", "expected exactly one of end_radius_m", "got both"}},
     {"ClothoidWithNeitherEndCurvature", "end_radius_m = 1000.0\nturn = \"left\"", "",
      {"track.segments[1]:", "expected exactly one of end_radius_m", "got neither"}},
+    {"TangentWhereTheTrackIsCurvedIsRejected", "type = \"arc\"", "type = \"tangent\"",
+     {"track.segments[2].type", "a tangent needs start curvature 0", "where the curvature is 0.001 1/m"}},
     {"NegativeContactDamping", "cone_angle_rad = 0.12", "cone_angle_rad = 0.12\nnormal_damping_N_s_per_m = -1.0",
      {"contacts.cone.normal_damping_N_s_per_m", "expected a damping in [0, 1e+08] N s/m", "got -1"}},
     {"ContactDampingWithPrescribedNormalForce", "normal = \"hertz\"", "normal = \"prescribed\"\nprescribed_wheel_load_N = 5.0e4\n"

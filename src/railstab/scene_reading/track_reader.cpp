@@ -51,6 +51,13 @@ TrackSegmentSpec read_segment(const TableReader& segment, double start_curvature
   switch (spec.kind) {
     case TrackSegmentKind::tangent:
       reject_clothoid_keys(segment, "a tangent segment");
+      // Curvature is continuous along the track: a tangent starts straight.
+      if (start_curvature_per_m != 0.0)
+        segment.fail("type",
+                     "a segment that starts at the curvature the track has there (\"arc\" or "
+                     "\"clothoid\"; a tangent needs start curvature 0: insert a clothoid before it)",
+                     "\"tangent\" where the curvature is " + format_number(start_curvature_per_m) +
+                         " 1/m");
       spec.end_curvature_per_m = 0.0;
       break;
     case TrackSegmentKind::arc:
