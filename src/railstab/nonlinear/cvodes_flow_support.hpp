@@ -10,8 +10,11 @@
 #include <sundials/sundials_linearsolver.h>
 #include <sundials/sundials_matrix.h>
 
+#include <railstab/integrate/stepper.hpp>
+
 #include <Eigen/Core>
 
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -24,6 +27,19 @@ inline Eigen::Map<Eigen::VectorXd> view(N_Vector v) {
 inline void check(int flag, const char* call) {
   if (flag < 0) throw std::runtime_error(std::string("integrate_flow: ") + call + " failed (flag " +
                                          std::to_string(flag) + ")");
+}
+
+// A run that CVODES stopped with `flag` < 0: "integrate_flow: <what>
+// stopped at t = ... s of <span> s (<flag name>)[: <first error>]".
+[[noreturn]] inline void throw_stopped(void* mem, int flag, const char* what, double span_s,
+                                       const std::string& error) {
+  double t_reached = 0.0;
+  CVodeGetCurrentTime(mem, &t_reached);
+  std::ostringstream msg;
+  msg << "integrate_flow: " << what << " stopped at t = " << t_reached << " s of " << span_s
+      << " s (" << take_sundials_string(CVodeGetReturnFlagName(flag)) << ")";
+  if (!error.empty()) msg << ": " << error;
+  throw std::runtime_error(msg.str());
 }
 
 // CVODES's error handler; `user` is the std::string that keeps the first message.

@@ -11,10 +11,7 @@
 #include <sunmatrix/sunmatrix_dense.h>
 
 #include <cmath>
-#include <cstdlib>
-#include <cstring>
 #include <ctime>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -153,17 +150,7 @@ FlowResult integrate_flow(const FlowSystem& system, const Eigen::VectorXd& x0,
   // Never step past T (an orbit's end); samples before it are interpolated
   // (CVODES's dense output), so they do not shorten the steps.
   check(CVodeSetStopTime(mem, duration_s), "CVodeSetStopTime");
-  auto fail = [&](int flag) {
-    double t_reached = 0.0;
-    CVodeGetCurrentTime(mem, &t_reached);
-    std::ostringstream msg;
-    char* name = CVodeGetReturnFlagName(flag);  // malloc'ed per call
-    msg << "integrate_flow: CVODES stopped at t = " << t_reached << " s of " << duration_s << " s ("
-        << name << ")";
-    std::free(name);
-    if (!data.error.empty()) msg << ": " << data.error;
-    throw std::runtime_error(msg.str());
-  };
+  auto fail = [&](int flag) { flow_support::throw_stopped(mem, flag, "CVODES", duration_s, data.error); };
   auto sample_time = [&](int k) { return k == intervals ? duration_s : duration_s * double(k) / intervals; };
   RecordedTrajectory trajectory;
   if (!second_pass) {

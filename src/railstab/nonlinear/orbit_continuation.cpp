@@ -154,6 +154,17 @@ std::complex<double> crossing_multiplier(const PeriodicOrbit& a, const PeriodicO
 
 namespace {
 
+// The unknowns at c + g (c - q) along the secant from q through c (g > 0
+// beyond c, g < 0 back towards q): a predictor, or a guess between orbits.
+struct SecantPoint {
+  Eigen::VectorXd start;
+  double period_s = 0.0, speed_m_per_s = 0.0;
+};
+SecantPoint secant_point(const PeriodicOrbit& c, const PeriodicOrbit& q, double g) {
+  return {c.start + g * (c.start - q.start), c.period_s + g * (c.period_s - q.period_s),
+          c.speed_m_per_s + g * (c.speed_m_per_s - q.speed_m_per_s)};
+}
+
 // A fold just found from the vertex of the parabola V(a) through orbits k-2,
 // k-1, k: one more orbit at fixed excursion at the vertex's excursion a*
 // (the guess interpolated from the neighbour on a*'s side), then the vertex
@@ -178,14 +189,11 @@ bool refine_fold(OrbitBifurcation& fold, const std::vector<PeriodicOrbit>& o, in
         std::abs(q->start(ia) - a1) >= std::abs(a_star - a1))
       side = q;
   if (side == nullptr) return false;
-  const double g = (a_star - a1) / (side->start(ia) - a1);
+  const SecantPoint guess = secant_point(c, *side, -(a_star - a1) / (side->start(ia) - a1));
   PeriodicOrbit r;
   try {
-    r = solve_periodic_orbit(system, coords, OrbitConstraint::fixed_excursion(a_star),
-                             c.start + g * (side->start - c.start),
-                             c.period_s + g * (side->period_s - c.period_s),
-                             c.speed_m_per_s + g * (side->speed_m_per_s - c.speed_m_per_s),
-                             options.shooting, &c);
+    r = solve_periodic_orbit(system, coords, OrbitConstraint::fixed_excursion(a_star), guess.start,
+                             guess.period_s, guess.speed_m_per_s, options.shooting, &c);
   } catch (const ShootingFailure& e) {
     failure = e.what();
     return false;
@@ -252,9 +260,9 @@ OrbitBranch continue_branch(const FlowSystem& system, const OrbitCoordinates& co
     while (!accepted) {
       if (h < options.min_step) return finish("step-size floor reached");
       const double g = h / length;  // fraction of the last secant
-      const Eigen::VectorXd x_pred = c.start + g * (c.start - p.start);
-      const double T_pred = c.period_s + g * (c.period_s - p.period_s);
-      const double V_pred = c.speed_m_per_s + g * (c.speed_m_per_s - p.speed_m_per_s);
+      const SecantPoint pred = secant_point(c, p, g);
+      const Eigen::VectorXd& x_pred = pred.start;
+      const double T_pred = pred.period_s, V_pred = pred.speed_m_per_s;
       OrbitConstraint constraint{tV / sV, ta / sa, V_pred, x_pred(ia)};
       const std::clock_t corrector_cpu0 = std::clock();
       try {
@@ -294,13 +302,13 @@ OrbitBranch continue_branch(const FlowSystem& system, const OrbitCoordinates& co
         // condition.
         if (options.excursion_step_after_failure && ta != 0.0) {
           const double a_next = c.start(ia) + h * ta * sa;
-          const double g = (a_next - c.start(ia)) / (c.start(ia) - p.start(ia));
+          const SecantPoint guess =
+              secant_point(c, p, (a_next - c.start(ia)) / (c.start(ia) - p.start(ia)));
           const std::clock_t excursion_cpu0 = std::clock();
           try {
             PeriodicOrbit next = solve_periodic_orbit(
-                system, coords, OrbitConstraint::fixed_excursion(a_next),
-                c.start + g * (c.start - p.start), c.period_s + g * (c.period_s - p.period_s),
-                c.speed_m_per_s + g * (c.speed_m_per_s - p.speed_m_per_s), options.shooting, &c);
+                system, coords, OrbitConstraint::fixed_excursion(a_next), guess.start,
+                guess.period_s, guess.speed_m_per_s, options.shooting, &c);
             branch.orbits.push_back(std::move(next));
             accepted = true;
             if (options.progress) options.progress(int(branch.orbits.size()), branch.orbits.back());

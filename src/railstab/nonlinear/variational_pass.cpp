@@ -7,8 +7,6 @@
 #include <sunmatrix/sunmatrix_dense.h>
 
 #include <algorithm>
-#include <cstdlib>
-#include <sstream>
 #include <string>
 
 namespace railstab {
@@ -126,16 +124,8 @@ VariationalResult integrate_variational_equations(const FlowSystem& system,
   check(CVodeSetStopTime(mem, t_end), "CVodeSetStopTime");
   double t_reached = 0.0;
   const int flag = CVode(mem, t_end, run.y, &t_reached, CV_NORMAL);
-  if (flag < 0) {
-    CVodeGetCurrentTime(mem, &t_reached);
-    std::ostringstream msg;
-    char* name = CVodeGetReturnFlagName(flag);  // malloc'ed per call
-    msg << "integrate_flow: the variational equations stopped at t = " << t_reached << " s of "
-        << duration_s << " s (" << name << ")";
-    std::free(name);
-    if (!data.error.empty()) msg << ": " << data.error;
-    throw std::runtime_error(msg.str());
-  }
+  if (flag < 0)
+    flow_support::throw_stopped(mem, flag, "the variational equations", duration_s, data.error);
   VariationalResult out;
   out.state_sensitivity = Y.leftCols(n);
   out.speed_sensitivity = Y.col(n);
