@@ -12,13 +12,16 @@
 #                           default below: input readers and hostile input,
 #                           the command line (which runs the instrumented
 #                           executable, so every command's code path), the
-#                           contact, element and track code, and the SUNDIALS
-#                           integrators; left out: check, model, nonlinear
-#                           (the CVODES orbits: their long runs were skipped
-#                           here anyway), ride, stability, report, reference,
-#                           linear, sensitivity, study, extreme, cases and
-#                           verify, whose code the command-line tests run too;
-#                           CI took 34 of its 35 minutes with them)
+#                           contact, element and track code, the SUNDIALS
+#                           integrators, the periodic orbits (nonlinear: the
+#                           normal-form and Bautin orbits, both ways of
+#                           integrating the variational equations, the Hopf
+#                           coefficients), steady curving and the scene's
+#                           setup; left out: check, model, ride, stability,
+#                           report, reference, linear, sensitivity, study,
+#                           extreme, cases and verify, whose code the
+#                           command-line tests run too; CI took 34 of its 35
+#                           minutes with them)
 #   RAILSTAB_FUZZ_SECONDS   time per harness (default 30: 60 s in total)
 #   RAILSTAB_SANITIZE_SKIP  ctest -E regex of tests left out within those
 #                           folders (default below: the long time-domain
@@ -27,17 +30,21 @@
 #                           ASan whose code shorter tests run: the Hopf
 #                           amplitude checks, the ramps, the limit-cycle
 #                           error, the frame-independence run), the
-#                           thesis-vehicle periodic orbits and the
-#                           bogie's monodromy against central differences
-#                           (40-110 s each in Release; the normal-form orbit
-#                           tests run the same code and stay in), the tests
+#                           thesis-vehicle periodic orbits, the S1002
+#                           profile-contact orbits and the bogie's monodromy
+#                           against central differences (6-52 s each in
+#                           Release; the normal-form orbit tests run the same
+#                           code and stay in), the steady-curving sweeps and continuations
+#                           (20-80 s each under ASan; the curving command's
+#                           tests in cli/ and the short curving tests run
+#                           that code), the tests
 #                           that assert a CPU time or a CPU budget, which the
 #                           sanitizers' ~10x slowdown breaks, and the
 #                           packaging tests)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 fuzz_seconds=${RAILSTAB_FUZZ_SECONDS:-30}
-long_runs='CliRunErrors\.ReachingTheTableEdge|CliAssess\.|CliIrregularTrack\.|SteadyCurvingProfiles\.EquilibriumIsWhere|CriticalSpeedSensitivity\.ThesisVehicle|ContactDamping\.VerifyInTheArc|ThesisBogie\.ShiftsOutwardsInCurve|ExtremeConservative|Extreme/ExtremeRun|Verification\.|ErrorEstimate\.|ExtremeNearCritical|CurveStabilityProfiles\.(SpinMode|VehicleArc|HighSpeed)|CliVerifyAnyMode|OrbitContinuationThesisVehicle\.|FlowSensitivity\.Monodromy|BifurcationAnalysisThesisBogie\.|HopfThesisVehicle\.TimeDomain|HopfBrusselator\.PredictedAmplitude|SpeedRamp\.HuntingEnds|CliSpeedRamp\.(TwoRates|S1002Bogie)|LimitCycleError\.AmplitudeAndPeriod|BodyDynamics\.CurveResultIndependent|SparseNewtonRun\.FollowsTheDenseRunWithinTheTolerance/..thesis_train_4'
+long_runs='CliRunErrors\.ReachingTheTableEdge|CliAssess\.|CliIrregularTrack\.|SteadyCurvingProfiles\.EquilibriumIsWhere|SteadyCurvingCoach\.(EquilibriumCommand|SweepFrom|IssuePointFound)|SteadyCurvingThesisVehicle\.|CriticalSpeedSensitivity\.ThesisVehicle|ContactDamping\.VerifyInTheArc|ThesisBogie\.ShiftsOutwardsInCurve|ExtremeConservative|Extreme/ExtremeRun|Verification\.|ErrorEstimate\.|ExtremeNearCritical|CurveStabilityProfiles\.(SpinMode|VehicleArc|HighSpeed)|CliVerifyAnyMode|OrbitContinuationThesisVehicle\.|ProfileContactOrbit\.|FlowSensitivity\.Monodromy|BifurcationAnalysisThesisBogie\.|HopfThesisVehicle\.TimeDomain|HopfBrusselator\.PredictedAmplitude|SpeedRamp\.HuntingEnds|CliSpeedRamp\.(TwoRates|S1002Bogie)|LimitCycleError\.AmplitudeAndPeriod|BodyDynamics\.CurveResultIndependent|SparseNewtonRun\.FollowsTheDenseRunWithinTheTolerance/..thesis_train_4'
 timed='ContactTables\.BuildTakesUnderOneSecond|SundialsFlagNames|WorkLimits'
 # Packaging and build tests (the example programs, install + find_package,
 # the compile-fail test of the element contract): about the
@@ -47,7 +54,7 @@ packaging='^example_critical_speed$|^example_eigen_at_speed$|^install_and_find_p
 skip=${RAILSTAB_SANITIZE_SKIP:-"$long_runs|$timed|$packaging"}
 build=build-sanitize
 
-dirs=${RAILSTAB_SANITIZE_DIRS:-"cli;hostile;scene;scene_reading;io;profiles;contact_geometry;contact;elements;track;integrate"}
+dirs=${RAILSTAB_SANITIZE_DIRS:-"cli;hostile;scene;scene_reading;io;profiles;contact_geometry;contact;elements;track;integrate;nonlinear;curving;setup"}
 
 # The Python module stays out: an ASan-built extension needs the ASan runtime
 # preloaded into the interpreter, and the Release suite tests it.

@@ -117,6 +117,32 @@ TEST(PeriodicOrbitNormalForm, RadiusPeriodAndMultipliersMatchTheClosedForm) {
   EXPECT_LE(o.newton_iterations, 6);
 }
 
+// The same orbit with the variational equations in a second pass along the
+// recorded state (what profile contact uses): the same closed form, to the
+// same tolerances. Small enough to run under the sanitizers, where the
+// profile-contact orbits are too long.
+TEST(PeriodicOrbitNormalForm, SecondPassGivesTheClosedFormMultipliers) {
+  const FlowSystem s = normal_form(false);
+  const double V = kHopfSpeed + 0.09;
+  Eigen::VectorXd guess(3);
+  guess << 0.28, 0.0, 0.0;
+  ShootingOptions options = tight_shooting();
+  options.flow.variational = FlowOptions::Variational::second_pass;
+  const PeriodicOrbit o = solve_periodic_orbit(s, kNormalFormCoords, OrbitConstraint::fixed_speed(V),
+                                               guess, 1.02, V, options);
+  const double T = 1.0 / (kOmega / (2.0 * kPi));
+  std::printf("[ second   ] r - 0.3 = %.2e, T - 1 = %.2e, mu - closed form = %.2e, trivial %.2e\n",
+              o.start(0) - 0.3, o.period_s - T,
+              std::abs(o.critical_multiplier - std::exp(-2.0 * 0.09 * T)), o.trivial_multiplier_error);
+  EXPECT_NEAR(o.start(0), 0.3, 1e-9);
+  EXPECT_NEAR(o.period_s, T, 1e-9 * T);
+  ASSERT_EQ(o.floquet_multipliers.size(), 3);
+  EXPECT_LT(o.trivial_multiplier_error, 1e-7);
+  EXPECT_NEAR(std::abs(o.critical_multiplier - std::exp(-2.0 * 0.09 * T)), 0.0, 1e-7);
+  EXPECT_NEAR(std::abs(o.floquet_multipliers(2)), std::exp(-50.0 * T), 1e-9);
+  EXPECT_TRUE(o.stable);
+}
+
 // A guess far from the orbit (radius 1.0 for 0.3, period 20 % long): a full
 // Newton step raises the residual; shortened, it reduces it and Newton ends
 // on the closed form. Without step shortening (max_step_halvings 0) the
