@@ -43,7 +43,7 @@ from railstab import _railstab
 from railstab._railstab import Error, InputError
 
 __all__ = ["Error", "InputError", "ModelWarning", "Result", "Scene", "load_scene", "check",
-           "critical_speed", "eigen", "equilibrium", "simulate", "speed_ramp", "verify",
+           "critical_speed", "eigen", "equilibrium", "curving", "simulate", "speed_ramp", "verify",
            "sensitivity",
            "contact_geometry", "study", "bifurcation"]
 __version__ = _railstab.__version__
@@ -287,6 +287,38 @@ def equilibrium(scene, set=None, *, speed=None, arc_length=None):
     out = _railstab.equilibrium(path, settings, speed, arc_length)
     r = _result(out)
     r.state = out["state"]
+    return r
+
+
+def _value_or_range(name, value):
+    """A number or (from, to, step) as the list of fields curving takes ([]: not given)."""
+    if value is None:
+        return []
+    if isinstance(value, numbers.Real) and not isinstance(value, bool):
+        return [float(value)]
+    if isinstance(value, (tuple, list)) and len(value) == 3 and all(
+            isinstance(v, numbers.Real) and not isinstance(v, bool) for v in value):
+        return [float(v) for v in value]
+    raise InputError(f"{name}: expected a number or (from, to, step) in metres, got {value!r}")
+
+
+def curving(scene, set=None, *, cant_deficiency=None, radius=None, arc_length=None):
+    """Steady curving over cant deficiency or radius: ``railstab curving``.
+
+    ``cant_deficiency`` and ``radius`` (m) are each a number or a range
+    ``(from, to, step)``, a range in one of them at most; the one not given
+    is the scene's at its reference point. Returns the curving JSON as a
+    Result (every condition's wheel forces Y, Q, Y/Q, Sum Y, angles of
+    attack, flange contact, and where the sweep stopped at a physical
+    limit, the statement), plus
+      table    the curving CSV's columns (one row per condition)
+    """
+    path, settings = _scene_and_settings(scene, set)
+    out = _railstab.curving(path, settings, arc_length,
+                            _value_or_range("cant_deficiency", cant_deficiency),
+                            _value_or_range("radius", radius))
+    r = _result(out)
+    r.table = _table(out["csv"])
     return r
 
 

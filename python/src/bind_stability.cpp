@@ -1,6 +1,7 @@
-// critical_speed, eigen, equilibrium and sensitivity: each prepares the
-// scene and calls the library as its command does (src/cli/
-// stability_commands.cpp, sensitivity_command.cpp), without the GIL; the
+// critical_speed, eigen, equilibrium, curving and sensitivity: each prepares
+// the scene and calls the library as its command does (src/cli/
+// stability_commands.cpp, curving_command.cpp, sensitivity_command.cpp),
+// without the GIL; the
 // command's writers render the JSON (written_files.hpp); the numbers behind
 // it come back as numpy arrays at full precision.
 #include "arguments.hpp"
@@ -10,21 +11,27 @@
 #include "progress_relay.hpp"
 #include "written_files.hpp"
 
+#include <railstab/curving/curving_request.hpp>
+#include <railstab/curving/steady_curving.hpp>
 #include <railstab/io/file_names.hpp>
 #include <railstab/nonlinear/hopf_assessment.hpp>
+#include <railstab/report/curving_report.hpp>
 #include <railstab/report/eigen_report.hpp>
 #include <railstab/report/equilibrium_report.hpp>
 #include <railstab/report/run_conditions.hpp>
 #include <railstab/report/sensitivity_report.hpp>
 #include <railstab/report/stability_report.hpp>
 #include <railstab/sensitivity/sensitivity_run.hpp>
+#include <railstab/setup/build_model.hpp>
 #include <railstab/stability/point_mode_shapes.hpp>
 #include <railstab/stability/quasi_linear_critical_speed.hpp>
 #include <railstab/stability/speed_analysis.hpp>
 
 #include <pybind11/stl.h>
 
+#include <charconv>
 #include <optional>
+#include <string>
 
 namespace py = pybind11;
 
@@ -246,6 +253,56 @@ py::dict equilibrium(const std::string& scene, const std::vector<std::string>& s
   return out;
 }
 
+// `railstab curving`: a value or (from, to, step) of cant deficiency and of
+// radius, each an empty list when not given; the same checks and sweep as
+// the command (curving_request.hpp), its messages naming these arguments.
+py::dict curving(const std::string& scene, const std::vector<std::string>& settings,
+                 std::optional<double> arc_length, const std::vector<double>& cant_deficiency,
+                 const std::vector<double>& radius) {
+  CurvingRequestNames names;
+  names.cant_deficiency = "cant_deficiency";
+  names.radius = "radius";
+  names.range = "(from, to, step)";
+  names.from = "from", names.to = "to", names.step = "step";
+  names.one_cant_deficiency = "cant_deficiency=H";
+  names.one_radius = "radius=R";
+  // As Python writes them: each number's shortest round-trip digits.
+  auto shown = [](const std::vector<double>& fields) {
+    std::string out = fields.size() == 1 ? "" : "(";
+    for (std::size_t k = 0; k < fields.size(); ++k) {
+      char digits[32];
+      const auto end = std::to_chars(digits, digits + sizeof digits, fields[k]).ptr;
+      out += (k ? ", " : "") + std::string(digits, end);
+    }
+    return fields.size() == 1 ? out : out + ")";
+  };
+  const std::vector<double> deficiencies =
+      cant_deficiency.empty()
+          ? std::vector<double>{}
+          : curving_values(cant_deficiency, CurvingQuantity::cant_deficiency, shown(cant_deficiency), names);
+  const std::vector<double> radii =
+      radius.empty() ? std::vector<double>{}
+                     : curving_values(radius, CurvingQuantity::radius, shown(radius), names);
+  check_curving_request(deficiencies, radii, names);
+  const SceneOverrides overrides = scene_overrides(settings, std::nullopt, arc_length);
+  WrittenFiles files;
+  {
+    py::gil_scoped_release no_gil;
+    const SceneSpec spec = load_scene_with_overrides(scene, overrides);
+    const Model model = build_model(spec);
+    const CurvingSweepPlan plan = plan_curving_sweep(model, spec.speed_m_per_s, deficiencies, radii, names);
+    const CurvingSweep sweep = sweep_steady_curving(model, plan.kind, plan.values, plan.fixed,
+                                                    spec.assessment.prudhomme_factor);
+    files = write_and_read([&](OutputSet& outputs) {
+      (void)write_curving_results(model, sweep, plan.kind, outputs, scene_file_stem(scene));
+    });
+  }
+  py::dict out;
+  out["json"] = files.ending_with("_curving.json");
+  out["csv"] = files.ending_with("_curving.csv");
+  return out;
+}
+
 py::dict sensitivity(const std::string& scene, const std::vector<std::string>& settings,
                      std::vector<std::string> keys, double from, double to, double step,
                      double hunting_band, py::object progress) {
@@ -288,6 +345,8 @@ void bind_stability(py::module_& m) {
   m.def("eigen", &eigen, arg("scene"), arg("settings"), arg("speed"), arg("arc_length"),
         arg("solver"), arg("hunting_band"));
   m.def("equilibrium", &equilibrium, arg("scene"), arg("settings"), arg("speed"), arg("arc_length"));
+  m.def("curving", &curving, arg("scene"), arg("settings"), arg("arc_length"),
+        arg("cant_deficiency"), arg("radius"));
   m.def("sensitivity", &sensitivity, arg("scene"), arg("settings"), arg("keys"), arg("from_"),
         arg("to"), arg("step"), arg("hunting_band"), arg("progress"));
 }

@@ -1,5 +1,6 @@
-"""critical_speed, eigen and equilibrium against the command line's files
-(textbook bogie: 12 states, critical speed 102.46 m/s)."""
+"""critical_speed, eigen, equilibrium and curving against the command line's
+files (textbook bogie: 12 states, critical speed 102.46 m/s; the coach on
+S1002/UIC60 in its curve for curving)."""
 import math
 
 import numpy as np
@@ -75,6 +76,40 @@ def test_equilibrium_equals_the_command(cli):
     run = cli("equilibrium", BOGIE, "--speed", "30")
     assert_same_report(r, run.json("_equilibrium_30mps.json"))
     assert r.state.ndim == 1 and np.all(np.isfinite(r.state))
+
+
+def test_curving_equals_the_command(cli):
+    # The coach in its curve over three cant deficiencies (0.3 s CPU).
+    coach = case("coach_s1002_curve.toml")
+    r = railstab.curving(coach, cant_deficiency=(0.0, 0.1, 0.05))
+    run = cli("curving", coach, "--cant-deficiency", "0:0.1:0.05")
+    assert_same_report(r, run.json("_curving.json"))
+    rows = run.csv_rows("_curving.csv")
+    assert list(r.table) == rows[0]
+    assert len(rows) - 1 == 3
+    for j, name in enumerate(rows[0]):
+        column = r.table[name]
+        if column.dtype == float:
+            assert [printed(v, 10) if not np.isnan(v) else "" for v in column] == \
+                [row[j] for row in rows[1:]], name
+    np.testing.assert_allclose(r.table["cant_deficiency_m"], [0.0, 0.05, 0.1], atol=1e-12)
+
+
+def test_curving_bad_requests_name_the_argument():
+    coach = case("coach_s1002_curve.toml")
+    for kwargs, said in (
+            (dict(radius=-250), ["radius", "in [10, 1e6] m", "'-250'"]),
+            (dict(cant_deficiency=(0.1, 0.3)), ["cant_deficiency", "(from, to, step)"]),
+            (dict(cant_deficiency=(0.1, 0.3, 0)), ["cant_deficiency", "step is not positive"]),
+            (dict(cant_deficiency=math.nan), ["cant_deficiency", "not a finite number"]),
+            (dict(cant_deficiency=(0, 0.3, 0.1), radius=(1000, 500, 100)), ["two ranges"]),
+            (dict(cant_deficiency=-0.2), ["cant_deficiency", "needs a speed of zero or less"]),
+            (dict(), ["cant_deficiency (from, to, step)", "radius (from, to, step)"]),
+            (dict(radius="250"), ["radius", "expected a number or (from, to, step)"])):
+        with pytest.raises(railstab.InputError) as e:
+            railstab.curving(coach, **kwargs)
+        for s in said:
+            assert s in str(e.value), (kwargs, str(e.value))
 
 
 def test_quasi_linear_critical_speed_equals_the_command(cli):
