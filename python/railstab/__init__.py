@@ -44,6 +44,7 @@ from railstab._railstab import Error, InputError
 
 __all__ = ["Error", "InputError", "ModelWarning", "Result", "Scene", "load_scene", "check",
            "critical_speed", "eigen", "equilibrium", "curving", "simulate", "speed_ramp", "verify",
+           "assess",
            "sensitivity",
            "contact_geometry", "study", "bifurcation"]
 __version__ = _railstab.__version__
@@ -391,6 +392,26 @@ def verify(scene, set=None, *, speed=None, arc_length=None, amplitude=1e-4, peri
     return _result(_railstab.verify(path, settings, speed, arc_length, amplitude, periods,
                                     settle_periods, bool(any_mode), bool(scene_offsets),
                                     _pairs("offset", offset), mode, mode_amplitude))
+
+
+def assess(scene, set=None, *, speed=None, t_end=None, arc_length=None, offset=None, mode=None,
+           mode_amplitude=None, progress=None):
+    """EN 14363 running stability from a time-domain run: ``railstab assess``.
+
+    The run starts from the scene's initial offsets (``offset`` replaces some,
+    as ``--offset``) or on a mode (``mode``, ``mode_amplitude``), on the
+    scene's track irregularities where it has them. Returns the assessment
+    JSON as a Result (Sum Y rms and bogie frame acceleration rms against
+    their limits, the 2 m safety quantities, passed or not), plus
+      windows   the windows CSV's columns (each quantity's rms over distance)
+    ``progress`` gets the simulated time (s).
+    """
+    path, settings = _scene_and_settings(scene, set)
+    out = _railstab.assess(path, settings, speed, arc_length, t_end, _pairs("offset", offset),
+                           mode, mode_amplitude, progress)
+    r = _result(out)
+    r.windows = _table(out["windows_csv"])
+    return r
 
 
 def sensitivity(scene, set=None, *, keys=None, from_=5.0, to=150.0, step=2.5, hunting_band=20.0,

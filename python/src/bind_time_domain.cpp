@@ -1,5 +1,6 @@
-// simulate, speed_ramp and verify: the nonlinear model in time, as the commands run it
-// (src/cli/simulate_command.cpp, verify_command.cpp), without the GIL. The
+// simulate, speed_ramp, verify and assess: the nonlinear model in time, as
+// the commands run it (src/cli/simulate_command.cpp, verify_command.cpp,
+// assess_command.cpp), without the GIL. The
 // run's summary (with the error estimate) is the command's JSON; the
 // channels are the command's CSV columns, written at 17 significant digits
 // (read back, the same doubles) and parsed by the Python layer.
@@ -9,13 +10,18 @@
 #include "model_warnings.hpp"
 #include "progress_relay.hpp"
 
+#include "written_files.hpp"
+
+#include <railstab/assessment/assessment_run.hpp>
 #include <railstab/check/run_check.hpp>
 #include <railstab/integrate/error_estimate.hpp>
 #include <railstab/integrate/integrator.hpp>
 #include <railstab/integrate/work_precision.hpp>
+#include <railstab/io/file_names.hpp>
 #include <railstab/io/output_files.hpp>
 #include <railstab/io/ride_files.hpp>
 #include <railstab/nonlinear/speed_ramp.hpp>
+#include <railstab/report/assessment_report.hpp>
 #include <railstab/report/simulation_report.hpp>
 #include <railstab/report/speed_ramp_report.hpp>
 #include <railstab/report/verify_report.hpp>
@@ -271,6 +277,53 @@ py::dict verify(const std::string& scene, const std::vector<std::string>& settin
   return out;
 }
 
+// `railstab assess`: EN 14363 running stability from one run
+// (assessment/assessment_run.hpp), started from the scene's offsets (with
+// `offsets`) or on a mode, as the command; no plots.
+py::dict assess(const std::string& scene, const std::vector<std::string>& settings,
+                std::optional<double> speed, std::optional<double> arc_length,
+                std::optional<double> t_end, const std::vector<std::string>& offsets,
+                std::optional<std::string> mode, std::optional<double> mode_amplitude,
+                py::object progress) {
+  check_in("t_end", t_end, flag_ranges::t_end_s);
+  check_in("mode_amplitude", mode_amplitude, flag_ranges::amplitude_m);
+  SceneOverrides overrides = scene_overrides(settings, speed, arc_length, offsets);
+  overrides.t_end_s = t_end;
+  overrides.apply_track_irregularities = true;  // as the time-domain commands
+  ProgressRelay relay(progress);
+  WrittenFiles files;
+  std::vector<std::string> warnings;
+  {
+    py::gil_scoped_release no_gil;
+    const PreparedScene s = prepare_scene(scene, overrides);
+    warnings = model_warnings(s);
+    std::string start = "the scene's initial offsets and rates";
+    for (const OffsetSetting& o : overrides.offsets) start += ", --offset " + o.text;
+    Eigen::VectorXd x0;
+    if (const std::optional<ModeStart> m = mode_start(s, mode, mode_amplitude, !offsets.empty())) {
+      x0 = m->state;
+      std::ostringstream text;
+      text << "mode '" << m->mode_name << "', " << m->leading_wheelset << " lateral "
+           << m->amplitude_m << " m";
+      start = text.str();
+    } else {
+      x0 = perturbed_initial_state(s);
+    }
+    const AssessmentRun run = run_running_stability_assessment(
+        s.model, s.speed_m_per_s, x0, start, s.spec.simulation, s.spec.assessment, relay.times());
+    files = write_and_read([&](OutputSet& outputs) {
+      (void)write_assessment_report(s.model, run.assessment, s.spec.assessment, run.conditions,
+                                    outputs, scene_file_stem(scene), false);
+    });
+  }
+  relay.rethrow();
+  py::dict out;
+  out["json"] = files.ending_with("_assessment.json");
+  out["windows_csv"] = files.ending_with("_assessment_windows.csv");
+  out["model_warnings"] = py::cast(warnings);
+  return out;
+}
+
 }  // namespace
 
 void bind_time_domain(py::module_& m) {
@@ -311,6 +364,8 @@ void bind_time_domain(py::module_& m) {
   m.def("verify", &verify, arg("scene"), arg("settings"), arg("speed"), arg("arc_length"),
         arg("amplitude"), arg("periods"), arg("settle_periods"), arg("any_mode"),
         arg("scene_offsets"), arg("offsets"), arg("mode"), arg("mode_amplitude"));
+  m.def("assess", &assess, arg("scene"), arg("settings"), arg("speed"), arg("arc_length"),
+        arg("t_end"), arg("offsets"), arg("mode"), arg("mode_amplitude"), arg("progress"));
 }
 
 }  // namespace railstab::python

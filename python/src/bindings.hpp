@@ -5,7 +5,7 @@
 namespace railstab::python {
 
 void bind_stability(pybind11::module_& m);    // critical_speed, eigen, equilibrium, curving, sensitivity
-void bind_time_domain(pybind11::module_& m);  // simulate, verify
+void bind_time_domain(pybind11::module_& m);  // simulate, speed_ramp, verify, assess
 void bind_studies(pybind11::module_& m);      // load_scene, check, contact_geometry, study, bifurcation
 
 }  // namespace railstab::python

@@ -1,5 +1,6 @@
-"""simulate and verify against the command line's files (textbook wheelset,
-short runs)."""
+"""simulate, verify and assess against the command line's files (textbook
+wheelset, short runs; the textbook bogie for assess, which needs a bogie
+frame)."""
 import numpy as np
 
 import railstab
@@ -71,3 +72,29 @@ def test_speed_ramp_equals_the_command(cli):
     rows = run.csv_rows("_ramp_envelope.csv")
     assert list(r.envelope) == rows[0] and len(r.envelope["time_s"]) == len(rows) - 1
     assert all(ramp["vanished"] for ramp in r.ramps)
+
+
+def test_assess_equals_the_command(cli):
+    # The textbook bogie below its critical speed from a 3 mm offset, 4 s
+    # (0.1 s CPU each).
+    vehicle = case("textbook_bogie.toml")
+    r = railstab.assess(vehicle, speed=60.0, t_end=4.0, offset={"wheelset1.y_m": 0.003})
+    run = cli("assess", vehicle, "--speed", "60", "--t-end", "4", "--offset", "wheelset1.y_m=0.003",
+              "--no-plots")
+    assert_same_report(r, run.json("_assessment.json"))
+    assert r.passed is True
+    assert "--offset wheelset1.y_m=0.003" in r.excitation
+    rows = run.csv_rows("_assessment_windows.csv")
+    assert list(r.windows) == rows[0]
+    assert len(r.windows[rows[0][0]]) == len(rows) - 1
+
+
+def test_assess_refuses_a_mode_and_an_offset_together():
+    vehicle = case("textbook_bogie.toml")
+    try:
+        railstab.assess(vehicle, speed=60.0, t_end=4.0, offset={"wheelset1.y_m": 0.003},
+                        mode="hunting", mode_amplitude=0.001)
+    except railstab.InputError as e:
+        assert "mode and offset" in str(e)
+    else:
+        raise AssertionError("a mode and an offset together were accepted")
