@@ -93,26 +93,36 @@ ShootingOptions tight_shooting() {
   return o;
 }
 
-}  // namespace
-
-TEST(PeriodicOrbitNormalForm, RadiusPeriodAndMultipliersMatchTheClosedForm) {
+// The supercritical orbit at alpha 0.09 (r = 0.3, T = 1 s) from a guess
+// near it, and its radius, period and multipliers against the closed form.
+PeriodicOrbit closed_form_orbit(const ShootingOptions& options) {
   const FlowSystem s = normal_form(false);
-  const double V = kHopfSpeed + 0.09;  // alpha 0.09: r = 0.3
+  const double V = kHopfSpeed + 0.09;
   Eigen::VectorXd guess(3);
   guess << 0.28, 0.0, 0.0;
-  const PeriodicOrbit o = solve_periodic_orbit(s, kNormalFormCoords, OrbitConstraint::fixed_speed(V),
-                                               guess, 1.02, V, tight_shooting());
+  return solve_periodic_orbit(s, kNormalFormCoords, OrbitConstraint::fixed_speed(V), guess, 1.02, V,
+                              options);
+}
+
+void expect_closed_form_orbit(const PeriodicOrbit& o) {
   const double T = 1.0 / (kOmega / (2.0 * kPi));
   EXPECT_NEAR(o.start(0), 0.3, 1e-9);
-  EXPECT_NEAR(o.start(2), slave_at_section(0.3), 1e-9);
   EXPECT_NEAR(o.period_s, T, 1e-9 * T);
-  EXPECT_NEAR(o.speed_m_per_s, V, 0.0);
-  EXPECT_NEAR(o.amplitude(0), 0.3, 1e-6);  // from 200 interpolated samples
   ASSERT_EQ(o.floquet_multipliers.size(), 3);
   EXPECT_LT(o.trivial_multiplier_error, 1e-7);
   EXPECT_NEAR(std::abs(o.critical_multiplier - std::exp(-2.0 * 0.09 * T)), 0.0, 1e-7);
   EXPECT_NEAR(std::abs(o.floquet_multipliers(2)), std::exp(-50.0 * T), 1e-9);
   EXPECT_TRUE(o.stable);
+}
+
+}  // namespace
+
+TEST(PeriodicOrbitNormalForm, RadiusPeriodAndMultipliersMatchTheClosedForm) {
+  const PeriodicOrbit o = closed_form_orbit(tight_shooting());
+  expect_closed_form_orbit(o);
+  EXPECT_NEAR(o.start(2), slave_at_section(0.3), 1e-9);
+  EXPECT_NEAR(o.speed_m_per_s, kHopfSpeed + 0.09, 0.0);
+  EXPECT_NEAR(o.amplitude(0), 0.3, 1e-6);  // from 200 interpolated samples
   EXPECT_LT(o.periodicity_residual, 1e-8);
   EXPECT_LE(o.newton_iterations, 6);
 }
@@ -122,25 +132,13 @@ TEST(PeriodicOrbitNormalForm, RadiusPeriodAndMultipliersMatchTheClosedForm) {
 // same tolerances. Small enough to run under the sanitizers, where the
 // profile-contact orbits are too long.
 TEST(PeriodicOrbitNormalForm, SecondPassGivesTheClosedFormMultipliers) {
-  const FlowSystem s = normal_form(false);
-  const double V = kHopfSpeed + 0.09;
-  Eigen::VectorXd guess(3);
-  guess << 0.28, 0.0, 0.0;
   ShootingOptions options = tight_shooting();
   options.flow.variational = FlowOptions::Variational::second_pass;
-  const PeriodicOrbit o = solve_periodic_orbit(s, kNormalFormCoords, OrbitConstraint::fixed_speed(V),
-                                               guess, 1.02, V, options);
-  const double T = 1.0 / (kOmega / (2.0 * kPi));
+  const PeriodicOrbit o = closed_form_orbit(options);
   std::printf("[ second   ] r - 0.3 = %.2e, T - 1 = %.2e, mu - closed form = %.2e, trivial %.2e\n",
-              o.start(0) - 0.3, o.period_s - T,
-              std::abs(o.critical_multiplier - std::exp(-2.0 * 0.09 * T)), o.trivial_multiplier_error);
-  EXPECT_NEAR(o.start(0), 0.3, 1e-9);
-  EXPECT_NEAR(o.period_s, T, 1e-9 * T);
-  ASSERT_EQ(o.floquet_multipliers.size(), 3);
-  EXPECT_LT(o.trivial_multiplier_error, 1e-7);
-  EXPECT_NEAR(std::abs(o.critical_multiplier - std::exp(-2.0 * 0.09 * T)), 0.0, 1e-7);
-  EXPECT_NEAR(std::abs(o.floquet_multipliers(2)), std::exp(-50.0 * T), 1e-9);
-  EXPECT_TRUE(o.stable);
+              o.start(0) - 0.3, o.period_s - 1.0,
+              std::abs(o.critical_multiplier - std::exp(-2.0 * 0.09)), o.trivial_multiplier_error);
+  expect_closed_form_orbit(o);
 }
 
 // A guess far from the orbit (radius 1.0 for 0.3, period 20 % long): a full
