@@ -219,11 +219,8 @@ py::dict bifurcation(const std::string& scene, const std::vector<std::string>& s
     });
   }
   relay.rethrow();
-  py::dict out;
-  out["json"] = files.ending_with("_bifurcation.json");
-  out["csv"] = files.ending_with("_bifurcation_branches.csv");
-  out["model_warnings"] = py::cast(warnings);
-  return out;
+  return files_by_key(files, {{"json", "_bifurcation.json"}, {"csv", "_bifurcation_branches.csv"}},
+                      warnings);
 }
 
 }  // namespace

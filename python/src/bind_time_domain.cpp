@@ -317,11 +317,8 @@ py::dict assess(const std::string& scene, const std::vector<std::string>& settin
     });
   }
   relay.rethrow();
-  py::dict out;
-  out["json"] = files.ending_with("_assessment.json");
-  out["windows_csv"] = files.ending_with("_assessment_windows.csv");
-  out["model_warnings"] = py::cast(warnings);
-  return out;
+  return files_by_key(files, {{"json", "_assessment.json"}, {"windows_csv", "_assessment_windows.csv"}},
+                      warnings);
 }
 
 }  // namespace

@@ -1,5 +1,7 @@
 #include "written_files.hpp"
 
+#include <pybind11/stl.h>
+
 #include <railstab/io/regular_file.hpp>
 
 #include <cstdlib>
@@ -69,6 +71,15 @@ WrittenFiles write_and_read(const std::function<void(OutputSet&)>& write) {
       files.text[e.path().filename().string()] =
           read_regular_file(e.path().string(), std::size_t(1) << 31);
   return files;
+}
+
+pybind11::dict files_by_key(const WrittenFiles& files,
+                            const std::vector<std::pair<const char*, const char*>>& key_suffixes,
+                            const std::vector<std::string>& model_warnings) {
+  pybind11::dict out;
+  for (const auto& [key, suffix] : key_suffixes) out[key] = files.ending_with(suffix);
+  out["model_warnings"] = pybind11::cast(model_warnings);
+  return out;
 }
 
 }  // namespace railstab::python

@@ -7,9 +7,13 @@
 // writer leaves nothing half-written to read).
 #include <railstab/io/output_set.hpp>
 
+#include <pybind11/pybind11.h>
+
 #include <functional>
 #include <map>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace railstab::python {
 
@@ -22,5 +26,11 @@ struct WrittenFiles {
 };
 
 WrittenFiles write_and_read(const std::function<void(OutputSet&)>& write);
+
+// What a binding returns of them: for each (key, suffix) the file ending
+// with that suffix, and the model check's warnings under "model_warnings".
+pybind11::dict files_by_key(const WrittenFiles& files,
+                            const std::vector<std::pair<const char*, const char*>>& key_suffixes,
+                            const std::vector<std::string>& model_warnings);
 
 }  // namespace railstab::python
