@@ -1,9 +1,9 @@
 // critical_speed, eigen, equilibrium, curving and sensitivity: each prepares
 // the scene and calls the library as its command does (src/cli/
 // stability_commands.cpp, curving_command.cpp, sensitivity_command.cpp),
-// without the GIL; the
-// command's writers render the JSON (written_files.hpp); the numbers behind
-// it come back as numpy arrays at full precision.
+// without the GIL; the command's writers render the JSON
+// (written_files.hpp); the numbers behind it come back as numpy arrays at
+// full precision.
 #include "arguments.hpp"
 #include "bindings.hpp"
 #include "numpy_arrays.hpp"
