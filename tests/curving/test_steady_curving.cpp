@@ -144,7 +144,9 @@ TEST(SteadyCurvingCoach, SweepFromCantExcessToThreeHundredMillimetres) {
   // their flanges (found from the nominal position: the continued one is
   // unstable there).
   for (size_t i = 0; i < h_d.size(); ++i)
-    if (h_d[i] < 0.18) EXPECT_TRUE(sweep.points[i].stability.stable()) << h_d[i];
+    if (h_d[i] < 0.18) {
+      EXPECT_TRUE(sweep.points[i].stability.stable()) << h_d[i];
+    }
   const CurvingPoint& last = sweep.points.back();
   EXPECT_TRUE(last.stability.stable()) << last.stability.describe();
   EXPECT_TRUE(last.wheelsets[1].right_flange || last.wheelsets[3].right_flange);
@@ -231,7 +233,9 @@ TEST(SteadyCurvingLimit, BeyondNadalTheStatementNamesTheWheelAndIsTrue) {
     for (const WheelForces& w :
          wheel_forces(arc, c.speed_m_per_s, 0.0, e.last_converged->equilibrium.state)) {
       const double limit = (std::tan(w.flange_angle_rad) - 1.0) / (1.0 + std::tan(w.flange_angle_rad));
-      if (w.y_over_q && w.nadal_limit) EXPECT_NEAR(*w.nadal_limit, limit, 1e-12);
+      if (w.y_over_q && w.nadal_limit) {
+        EXPECT_NEAR(*w.nadal_limit, limit, 1e-12);
+      }
       climbing = climbing || (w.y_over_q && *w.y_over_q >= limit &&
                               w.max_contact_angle_rad >= kFlangeContactAngle_rad);
     }

@@ -478,7 +478,9 @@ TEST(BandEigen, RefusesAnEmptyBox) {
 class BandEigenOnCase : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(BandEigenOnCase, EqualsDenseInTheBox) {
-  const PreparedScene s = prepare_scene(case_path(GetParam()), {{100.0}, {}, {}, {}});
+  SceneOverrides at_100;
+  at_100.speed_m_per_s = 100.0;
+  const PreparedScene s = prepare_scene(case_path(GetParam()), at_100);
   StabilityOptions dense_opt;
   dense_opt.solver = EigenSolverKind::dense;
   SpeedStability dense(s.model, s.equilibrium.state, s.speed_m_per_s, dense_opt);

@@ -333,8 +333,9 @@ class ExtremeEigen : public ::testing::TestWithParam<EigenCase> {};
 
 TEST_P(ExtremeEigen, ResidualsSmallAndArpackAgreesWithDense) {
   const EigenCase& c = GetParam();
-  const PreparedScene s = prepare_scene(case_path(c.name), {std::nullopt, std::nullopt,
-                                                            c.steady_reference_m, {}});
+  SceneOverrides reference;
+  reference.reference_arc_length_m = c.steady_reference_m;
+  const PreparedScene s = prepare_scene(case_path(c.name), reference);
   const StabilityPoint dense = stability_at(s, EigenSolverKind::dense);
   ASSERT_EQ(int(dense.modes.size()), int(dense.linear.A.rows())) << "dense: every mode";
   const double worst_dense = check_residuals(dense, c.name + " dense");
@@ -381,8 +382,9 @@ INSTANTIATE_TEST_SUITE_P(
 // says so instead of returning a meaningless state.
 TEST(ExtremeEigen, TightCurveHasNoSteadyCurvingAndSaysSo) {
   try {
-    const PreparedScene s = prepare_scene(case_path("extreme_tight_curve"),
-                                          {std::nullopt, std::nullopt, 600.0, {}});
+    SceneOverrides in_the_curve;
+    in_the_curve.reference_arc_length_m = 600.0;
+    const PreparedScene s = prepare_scene(case_path("extreme_tight_curve"), in_the_curve);
     // If a steady state is found, it must carry the validity warning.
     const StabilityPoint p = stability_at(s, EigenSolverKind::dense);
     EXPECT_TRUE(contains(p.validity_warning, "flange clearance")) << p.validity_warning;

@@ -98,19 +98,25 @@ RunningStabilityAssessment assess_running_stability(const Model& model, const Ri
   }
   const BandPassFilter filter =
       butterworth_band_pass(dt, a.band_low_Hz, a.band_high_Hz, spec.stability_filter_order);
-  auto judge = [&](AssessedQuantity q) {
-    q.passed = q.value <= q.limit;
-    q.margin = 1.0 - q.value / q.limit;
+  // A quantity with its value and limit judged; `windows` the rms over
+  // distance (stability quantities) or none (the 2 m safety quantities).
+  auto judge = [&](const std::string& quantity, const std::string& subject, const std::string& unit,
+                   double value, double limit, std::vector<WindowValue> windows = {}) {
+    AssessedQuantity q;
+    q.quantity = quantity, q.subject = subject, q.unit = unit;
+    q.value = value, q.limit = limit;
+    q.passed = value <= limit;
+    q.margin = 1.0 - value / limit;
+    q.windows = std::move(windows);
     a.quantities.push_back(std::move(q));
   };
   auto rms_quantity = [&](const std::string& quantity, const std::string& subject, const std::string& unit,
                           const std::vector<double>& signal, double limit) {
-    AssessedQuantity q{quantity, subject, unit};
-    q.windows = sliding_rms(h.distance_m, filter_signal(filter, signal), spec.stability_window_m,
-                            spec.stability_window_step_m);
-    for (const WindowValue& w : q.windows) q.value = std::max(q.value, w.value);
-    q.limit = limit;
-    judge(q);
+    std::vector<WindowValue> windows = sliding_rms(h.distance_m, filter_signal(filter, signal),
+                                                   spec.stability_window_m, spec.stability_window_step_m);
+    double largest = 0.0;
+    for (const WindowValue& w : windows) largest = std::max(largest, w.value);
+    judge(quantity, subject, unit, largest, limit, std::move(windows));
   };
   const std::vector<WheelsetExtremes> extremes = wheelset_extremes(h);
   for (size_t w = 0; w < h.static_loads.size(); ++w) {
@@ -121,9 +127,9 @@ RunningStabilityAssessment assess_running_stability(const Model& model, const Ri
     rms_quantity("sum_y_rms", name, "N", sum_y,
                  prudhomme_limit_N(h.static_loads[w].axle_load_N(), spec.prudhomme_factor) / 2.0);
     if (extremes[w].max_abs_sum_y_2m_N)
-      judge({"sum_y_2m", name, "N", *extremes[w].max_abs_sum_y_2m_N, extremes[w].prudhomme_limit_N});
+      judge("sum_y_2m", name, "N", *extremes[w].max_abs_sum_y_2m_N, extremes[w].prudhomme_limit_N);
     if (extremes[w].max_y_over_q_2m)
-      judge({"y_over_q_2m", name, "", *extremes[w].max_y_over_q_2m, spec.y_over_q_limit});
+      judge("y_over_q_2m", name, "", *extremes[w].max_y_over_q_2m, spec.y_over_q_limit);
     for (size_t i = 0; i < h.times_s.size(); ++i)
       if (!h.wheelsets[i][w].left.y_over_q || !h.wheelsets[i][w].right.y_over_q) {
         std::ostringstream msg;
