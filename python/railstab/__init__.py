@@ -46,7 +46,7 @@ __all__ = ["Error", "InputError", "ModelWarning", "Result", "Scene", "load_scene
            "critical_speed", "eigen", "equilibrium", "curving", "simulate", "speed_ramp", "verify",
            "assess",
            "sensitivity",
-           "contact_geometry", "study", "bifurcation"]
+           "contact_geometry", "track", "study", "bifurcation"]
 __version__ = _railstab.__version__
 
 
@@ -455,6 +455,24 @@ def _vary_text(key, values):
     except (TypeError, ValueError):
         raise InputError(f"vary: {key}: expected (from, to, step), got {values!r}") from None
     return f"{key}={_number_text(first)}:{_number_text(last)}:{_number_text(step)}"
+
+
+def track(scene, set=None):
+    """The scene's track irregularities: ``railstab track``.
+
+    Returns the irregularities JSON as a Result (every channel's target and
+    sample rms over its wavelength band), plus
+      samples    the channels CSV's columns (the arc length and each channel, m)
+      spectra    the PSD CSV's columns (each channel's Welch estimate and
+                 its target over wavelength)
+    No plots. The scene must have a [track.irregularities] table.
+    """
+    path, settings = _scene_and_settings(scene, set)
+    out = _railstab.track(path, settings)
+    r = _result(out)
+    r.samples = _table(out["channels_csv"])
+    r.spectra = _table(out["psd_csv"])
+    return r
 
 
 def study(scene, vary, set=None, *, from_=5.0, to=150.0, step=2.5, solver="auto",

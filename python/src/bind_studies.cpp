@@ -1,7 +1,8 @@
-// load_scene, contact_geometry, study and bifurcation, as their commands run
-// them (src/cli/contact_geometry_command.cpp, study_command.cpp,
-// bifurcation_command.cpp), without the GIL; JSON and tables from the
-// commands' own writers (written_files.hpp).
+// load_scene, contact_geometry, track, study and bifurcation, as their
+// commands run them (src/cli/contact_geometry_command.cpp,
+// track_command.cpp, study_command.cpp, bifurcation_command.cpp), without
+// the GIL; JSON and tables from the commands' own writers
+// (written_files.hpp).
 #include "arguments.hpp"
 #include "bindings.hpp"
 #include "model_warnings.hpp"
@@ -14,12 +15,15 @@
 #include <railstab/contact_geometry/rigid_contact.hpp>
 #include <railstab/scene_reading/scene_error.hpp>
 #include <railstab/io/file_names.hpp>
+#include <railstab/irregularity/irregularity_check.hpp>
 #include <railstab/nonlinear/bifurcation_analysis.hpp>
 #include <railstab/report/bifurcation_report.hpp>
 #include <railstab/report/contact_geometry_report.hpp>
+#include <railstab/report/irregularity_report.hpp>
 #include <railstab/report/model_check_report.hpp>
 #include <railstab/report/run_conditions.hpp>
 #include <railstab/report/study_report.hpp>
+#include <railstab/scene_reading/load_scene.hpp>
 #include <railstab/sensitivity/parameter_derivative.hpp>
 #include <railstab/setup/contact_tables.hpp>
 #include <railstab/study/study_run.hpp>
@@ -120,6 +124,32 @@ py::dict contact_geometry(const std::string& scene, const std::vector<std::strin
   out["characteristic_csv"] = files.ending_with("_characteristic.csv");
   out["conicity_csv"] = files.ending_with("_conicity.csv");
   return out;
+}
+
+// `railstab track`: the scene's [track.irregularities] synthesised, their
+// PSDs against the target and rms (no plots).
+py::dict track(const std::string& scene, const std::vector<std::string>& settings) {
+  const SceneOverrides overrides = scene_overrides(settings, std::nullopt, std::nullopt);
+  WrittenFiles files;
+  {
+    py::gil_scoped_release no_gil;
+    const SceneSpec spec = load_scene_file(scene, overrides.values);
+    if (!spec.track.irregularities)
+      throw SceneError(scene + ": track.irregularities: expected a [track.irregularities] table "
+                       "(psd = \"erri_b176_low\", ...: docs/irregular_track.md), got none: the track is "
+                       "perfect");
+    const TrackIrregularities irregularities(*spec.track.irregularities);
+    const IrregularityCheck check = check_irregularities(irregularities);
+    files = write_and_read([&](OutputSet& outputs) {
+      (void)write_irregularity_report(irregularities, check, spec.name, outputs, scene_file_stem(scene),
+                                      false);
+    });
+  }
+  return files_by_key(files,
+                      {{"json", "_irregularities.json"},
+                       {"channels_csv", "_irregularities.csv"},
+                       {"psd_csv", "_irregularity_psd.csv"}},
+                      {});
 }
 
 py::dict study(const std::string& scene, const std::vector<std::string>& settings,
@@ -231,6 +261,7 @@ void bind_studies(py::module_& m) {
   m.def("check", &check, arg("scene"), arg("settings"), arg("speed"), arg("arc_length"),
         arg("natural_frequencies"));
   m.def("contact_geometry", &contact_geometry, arg("scene"), arg("settings"), arg("contact"));
+  m.def("track", &track, arg("scene"), arg("settings"));
   m.def("study", &study, arg("scene"), arg("settings"), arg("vary"), arg("from_"), arg("to"),
         arg("step"), arg("solver"), arg("hunting_band"), arg("jobs"), arg("progress"));
   m.def("bifurcation", &bifurcation, arg("scene"), arg("settings"), arg("arc_length"),

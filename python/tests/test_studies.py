@@ -1,4 +1,4 @@
-"""load_scene, contact_geometry, study and bifurcation against the command line."""
+"""load_scene, contact_geometry, track, study and bifurcation against the command line."""
 import numpy as np
 import pytest
 
@@ -33,6 +33,27 @@ def test_contact_geometry_equals_the_command(cli):
         for j, name in enumerate(rows[0]):
             assert [printed(v, 10) if not np.isnan(v) else "" for v in table[name]] == \
                 [row[j] for row in rows[1:]], name
+
+
+def test_track_equals_the_command(cli, tmp_path):
+    # 600 m of ERRI B176 low irregularities under the thesis vehicle.
+    scene = tmp_path / "irregular.toml"
+    scene.write_text(open(case("thesis_vehicle_tangent.toml")).read() +
+                     '\n[track.irregularities]\npsd = "erri_b176_low"\nseed = 5\nlength_m = 600.0\n')
+    r = railstab.track(str(scene))
+    run = cli("track", scene, "--no-plots")
+    assert_same_report(r, run.json("_irregularities.json"))
+    for suffix, table in (("_irregularities.csv", r.samples), ("_irregularity_psd.csv", r.spectra)):
+        rows = run.csv_rows(suffix)
+        assert list(table) == rows[0]
+        assert len(table[rows[0][0]]) == len(rows) - 1
+    # The same irregularities set from Python, as --set does.
+    table = '{psd = "erri_b176_low", seed = 5, length_m = 600.0}'
+    r2 = railstab.track(case("thesis_vehicle_tangent.toml"), set={"track.irregularities": table})
+    np.testing.assert_array_equal(r2.samples["alignment_m"], r.samples["alignment_m"])
+    # A perfect track has nothing to show: said, naming the key.
+    with pytest.raises(railstab.InputError, match="track.irregularities"):
+        railstab.track(case("thesis_vehicle_tangent.toml"))
 
 
 def test_study_equals_the_command(cli):
