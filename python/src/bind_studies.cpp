@@ -134,11 +134,7 @@ py::dict track(const std::string& scene, const std::vector<std::string>& setting
   {
     py::gil_scoped_release no_gil;
     const SceneSpec spec = load_scene_file(scene, overrides.values);
-    if (!spec.track.irregularities)
-      throw SceneError(scene + ": track.irregularities: expected a [track.irregularities] table "
-                       "(psd = \"erri_b176_low\", ...: docs/irregular_track.md), got none: the track is "
-                       "perfect");
-    const TrackIrregularities irregularities(*spec.track.irregularities);
+    const TrackIrregularities irregularities(required_track_irregularities(spec, scene));
     const IrregularityCheck check = check_irregularities(irregularities);
     files = write_and_read([&](OutputSet& outputs) {
       (void)write_irregularity_report(irregularities, check, spec.name, outputs, scene_file_stem(scene),

@@ -260,10 +260,7 @@ py::dict verify(const std::string& scene, const std::vector<std::string>& settin
     }
     if (const std::optional<ModeStart> m = mode_start(s, mode, mode_amplitude, !offsets.empty())) {
       options.initial_state = m->state;
-      std::ostringstream text;
-      text << "mode '" << m->mode_name << "', " << m->leading_wheelset << " lateral "
-           << m->amplitude_m << " m";
-      options.initial_state_description = text.str();
+      options.initial_state_description = mode_start_description(*m);
     }
     const VerificationResult r =
         verify_least_stable_mode(s.model, s.speed_m_per_s, s.equilibrium.state, options);
@@ -302,10 +299,7 @@ py::dict assess(const std::string& scene, const std::vector<std::string>& settin
     Eigen::VectorXd x0;
     if (const std::optional<ModeStart> m = mode_start(s, mode, mode_amplitude, !offsets.empty())) {
       x0 = m->state;
-      std::ostringstream text;
-      text << "mode '" << m->mode_name << "', " << m->leading_wheelset << " lateral "
-           << m->amplitude_m << " m";
-      start = text.str();
+      start = mode_start_description(*m);
     } else {
       x0 = perturbed_initial_state(s);
     }

@@ -11,7 +11,6 @@
 
 #include <iostream>
 #include <memory>
-#include <sstream>
 
 namespace railstab {
 namespace {
@@ -31,9 +30,7 @@ void run_assess(const AssessArgs& args) {
   Eigen::VectorXd x0;
   if (const std::optional<ModeStart> mode = mode_start_from_flags(scene, args.start)) {
     x0 = mode->state;
-    std::ostringstream text;
-    text << "mode '" << mode->mode_name << "', " << mode->leading_wheelset << " lateral " << mode->amplitude_m << " m";
-    start = text.str();
+    start = mode_start_description(*mode);
   } else {
     x0 = perturbed_initial_state(scene);
   }

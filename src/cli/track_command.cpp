@@ -25,12 +25,10 @@ struct TrackArgs {
 void run_track(const TrackArgs& a) {
   if (a.plots) require_gnuplot();
   const SceneSpec spec = load_scene_file(a.scene, a.values);
-  if (!spec.track.irregularities)
-    throw SceneError(a.scene + ": track.irregularities: expected a [track.irregularities] table "
-                     "(psd = \"erri_b176_low\", ...: docs/irregular_track.md), got none: the track is perfect");
-  std::cerr << "synthesising " << spec.track.irregularities->length_m << " m of irregularities, "
-            << spec.track.irregularities->components << " cosines per channel\n";
-  const TrackIrregularities irregularities(*spec.track.irregularities);
+  const IrregularitySpec& wanted = required_track_irregularities(spec, a.scene);
+  std::cerr << "synthesising " << wanted.length_m << " m of irregularities, " << wanted.components
+            << " cosines per channel\n";
+  const TrackIrregularities irregularities(wanted);
   const IrregularityCheck check = check_irregularities(irregularities);
   OutputSet outputs(a.out_dir);
   const std::string shown =

@@ -52,10 +52,7 @@ void run_verify(const VerifyArgs& a) {
   }
   if (const std::optional<ModeStart> mode = mode_start_from_flags(s, a.start)) {
     options.initial_state = mode->state;
-    std::ostringstream text;
-    text << "mode '" << mode->mode_name << "', " << mode->leading_wheelset << " lateral "
-         << mode->amplitude_m << " m";
-    options.initial_state_description = text.str();
+    options.initial_state_description = mode_start_description(*mode);
   }
   const VerificationResult r = verify_least_stable_mode(s.model, s.speed_m_per_s, s.equilibrium.state, options);
   const std::string stem =

@@ -61,4 +61,11 @@ std::vector<ContactSpec> read_scene_contacts(const std::string& path,
   return scene_reading::read_contacts_document(text, path);
 }
 
+const IrregularitySpec& required_track_irregularities(const SceneSpec& spec, const std::string& path) {
+  if (!spec.track.irregularities)
+    throw SceneError(path + ": track.irregularities: expected a [track.irregularities] table "
+                     "(psd = \"erri_b176_low\", ...: docs/irregular_track.md), got none: the track is perfect");
+  return *spec.track.irregularities;
+}
+
 }  // namespace railstab

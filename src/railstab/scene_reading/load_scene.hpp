@@ -38,6 +38,11 @@ SceneSpec load_scene_file(const std::string& path);
 // read, before the settings (reports list the settings apart).
 SceneSpec load_scene_file(const std::string& path, const std::vector<SceneValueSetting>& settings);
 
+// The scene's [track.irregularities], or SceneError naming `path` and the
+// key when the track is perfect (for `railstab track` and its Python twin,
+// which have nothing to show then).
+const IrregularitySpec& required_track_irregularities(const SceneSpec& spec, const std::string& path);
+
 // Parses TOML text and checks the result; `source_name` (usually the file
 // path) prefixes every message and becomes SceneSpec::source_path. No file
 // is read, so source_sha256 stays empty.

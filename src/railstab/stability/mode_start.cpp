@@ -85,4 +85,11 @@ ModeStart mode_start_state(const Model& model, double speed_m_per_s,
   return out;
 }
 
+std::string mode_start_description(const ModeStart& start) {
+  std::ostringstream text;
+  text << "mode '" << start.mode_name << "', " << start.leading_wheelset << " lateral "
+       << start.amplitude_m << " m";
+  return text.str();
+}
+
 }  // namespace railstab

@@ -42,4 +42,8 @@ ModeStart mode_start_state(const Model& model, double speed_m_per_s,
                            const Eigen::VectorXd& equilibrium_guess, const std::string& selector,
                            double amplitude_m);
 
+// How a run started on it, as the reports say: "mode 'hunting', wheelset1
+// lateral 0.005 m".
+std::string mode_start_description(const ModeStart& start);
+
 }  // namespace railstab
