@@ -91,7 +91,9 @@ TEST(RunningStability, SinusoidAtF0KeepsItsRmsAndIsJudgedAgainstTheLimits) {
         EXPECT_NEAR(q.value, 1.0 / std::sqrt(2.0), 0.01);
         EXPECT_TRUE(q.passed);  // 0.71 m/s2 against ~5.4 m/s2
       }
-      if (q.quantity == "y_over_q_2m") EXPECT_NEAR(q.value, 0.1, 1e-12);
+      if (q.quantity == "y_over_q_2m") {
+        EXPECT_NEAR(q.value, 0.1, 1e-12);
+      }
     }
     EXPECT_EQ(sum_y_quantities, 4);
     EXPECT_EQ(frame_quantities, 2);

@@ -478,9 +478,7 @@ TEST(BandEigen, RefusesAnEmptyBox) {
 class BandEigenOnCase : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(BandEigenOnCase, EqualsDenseInTheBox) {
-  SceneOverrides at_100;
-  at_100.speed_m_per_s = 100.0;
-  const PreparedScene s = prepare_scene(case_path(GetParam()), at_100);
+  const PreparedScene s = prepare_scene(case_path(GetParam()), SceneOverrides::at_speed(100.0));
   StabilityOptions dense_opt;
   dense_opt.solver = EigenSolverKind::dense;
   SpeedStability dense(s.model, s.equilibrium.state, s.speed_m_per_s, dense_opt);

@@ -97,8 +97,8 @@ TEST(Train, UncoupledCarsRepeatTheVehicleSpectrum) {
 }
 
 TEST(Train, BuffersCarryNothingAtTheSteadyStateOnTangent) {
-  const PreparedScene vehicle = prepare_scene(case_path("thesis_vehicle_tangent"), {{60.0}, {}, {}, {}});
-  const PreparedScene train = prepare_scene(case_path("thesis_train_4"), {{60.0}, {}, {}, {}});
+  const PreparedScene vehicle = prepare_scene(case_path("thesis_vehicle_tangent"), SceneOverrides::at_speed(60.0));
+  const PreparedScene train = prepare_scene(case_path("thesis_train_4"), SceneOverrides::at_speed(60.0));
   ASSERT_EQ(train.model.bodies.size(), 4 * vehicle.model.bodies.size());
   ASSERT_EQ(train.model.n_coordinates, 4 * vehicle.model.n_coordinates);
   const int n = vehicle.model.n_coordinates, nt = train.model.n_coordinates;

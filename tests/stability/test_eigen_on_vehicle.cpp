@@ -16,7 +16,7 @@ using railstab::test::case_path;
 // the dense solver: each ARPACK eigenvalue matches a dense one to 1e-8
 // relative to |lambda| (both are backward stable; residuals ~1e-15).
 TEST(EigenOnVehicle, ArpackAgreesWithDense) {
-  const PreparedScene s = prepare_scene(case_path("thesis_vehicle_tangent"), {100.0, {}, {}, {}});
+  const PreparedScene s = prepare_scene(case_path("thesis_vehicle_tangent"), SceneOverrides::at_speed(100.0));
   StabilityOptions dense_opt, arpack_opt;
   arpack_opt.solver = EigenSolverKind::arpack;
   arpack_opt.arpack_shift = {0.0, 2.0 * M_PI * 4.0};

@@ -27,7 +27,7 @@ TrackSpec arc_track(double radius_m) {
 // loads left and right, vertical contact forces summing to the weight.
 TEST(Equilibrium, SymmetricVehicleOnTangent) {
   const PreparedScene s = prepare_scene(std::string(RAILSTAB_CASES_DIR) + "/thesis_vehicle_tangent.toml",
-                                        {30.0, std::nullopt, std::nullopt, {}});
+                                        SceneOverrides::at_speed(30.0));
   const Model& m = s.model;
   Eigen::MatrixXd q6, qd6;
   m.full_coordinates(0.0, s.speed_m_per_s, s.equilibrium.state, q6, qd6);

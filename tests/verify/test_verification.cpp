@@ -34,7 +34,7 @@ TEST(DampedSinusoidFit, RecoversKnownSignal) {
 TEST(Verification, ThesisBogieMatchesEigenvalue) {
   for (double v : {20.0, 38.0}) {
     const PreparedScene s = prepare_scene(std::string(RAILSTAB_CASES_DIR) +
-                                              "/thesis_bogie_tangent.toml", {v, {}, {}, {}});
+                                              "/thesis_bogie_tangent.toml", SceneOverrides::at_speed(v));
     const VerificationResult r = verify_least_stable_mode(s.model, s.speed_m_per_s, s.equilibrium.state);
     EXPECT_LT(r.frequency_difference_relative, 0.01) << v;
     EXPECT_LT(r.real_difference_relative, 0.05) << v;
@@ -49,7 +49,7 @@ TEST(Verification, ThesisBogieMatchesEigenvalue) {
 TEST(Verification, ThesisVehicleMatchesEigenvalue) {
   for (double v : {110.0, 115.0}) {
     const PreparedScene s = prepare_scene(std::string(RAILSTAB_CASES_DIR) +
-                                              "/thesis_vehicle_tangent.toml", {v, {}, {}, {}});
+                                              "/thesis_vehicle_tangent.toml", SceneOverrides::at_speed(v));
     const VerificationResult r = verify_least_stable_mode(s.model, s.speed_m_per_s, s.equilibrium.state);
     EXPECT_LT(r.frequency_difference_relative, 0.01) << v;
     EXPECT_LT(r.real_difference_relative, 0.05) << v;
@@ -66,7 +66,7 @@ TEST(Verification, ThesisVehicleMatchesEigenvalue) {
 // settling for one period it fits the sway (measured 6e-10).
 TEST(Verification, RefusesToRunOffTheUniformTrack) {
   const PreparedScene s = prepare_scene(std::string(RAILSTAB_CASES_DIR) +
-                                            "/thesis_vehicle_tangent.toml", {100.0, {}, {}, {}});
+                                            "/thesis_vehicle_tangent.toml", SceneOverrides::at_speed(100.0));
   try {
     verify_least_stable_mode(s.model, s.speed_m_per_s, s.equilibrium.state);
     FAIL() << "expected an error";
@@ -91,7 +91,7 @@ TEST(Verification, RefusesToRunOffTheUniformTrack) {
 TEST(Verification, FromTheSceneOffsetsMeetsTheTargets) {
   for (double v : {20.0, 38.0}) {
     const PreparedScene s = prepare_scene(std::string(RAILSTAB_CASES_DIR) +
-                                              "/thesis_bogie_tangent.toml", {v, {}, {}, {}});
+                                              "/thesis_bogie_tangent.toml", SceneOverrides::at_speed(v));
     VerificationOptions o;
     o.initial_state = perturbed_initial_state(s);
     const VerificationResult r = verify_least_stable_mode(s.model, s.speed_m_per_s, s.equilibrium.state, o);
@@ -113,7 +113,7 @@ TEST(Verification, FromTheSceneOffsetsMeetsTheTargets) {
 TEST(Verification, ProfileBogieMatchesEigenvalueInItsLinearRange) {
   for (double v : {20.0, 25.0}) {
     const PreparedScene s = prepare_scene(std::string(RAILSTAB_CASES_DIR) +
-                                              "/thesis_bogie_s1002_tangent.toml", {v, {}, {}, {}});
+                                              "/thesis_bogie_s1002_tangent.toml", SceneOverrides::at_speed(v));
     VerificationOptions o;
     o.amplitude_m = 1e-5;
     const VerificationResult r =
@@ -136,7 +136,7 @@ TEST(Verification, ProfileBogieMatchesEigenvalueInItsLinearRange) {
 // Asserted: within 0.5 % at 1 um, and at least 5x smaller than at 10 um.
 TEST(Verification, ProfileBogieNearCriticalSpeedConvergesAsTheAmplitudeShrinks) {
   const PreparedScene s = prepare_scene(
-      std::string(RAILSTAB_CASES_DIR) + "/thesis_bogie_s1002_tangent.toml", {36.0, {}, {}, {}});
+      std::string(RAILSTAB_CASES_DIR) + "/thesis_bogie_s1002_tangent.toml", SceneOverrides::at_speed(36.0));
   double error[2] = {0.0, 0.0};
   const double amplitudes[2] = {1e-5, 1e-6};
   for (int i = 0; i < 2; ++i) {

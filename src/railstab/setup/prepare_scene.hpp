@@ -31,6 +31,13 @@ struct SceneOverrides {
   // other analysis is of the design track (a steady state, a linearisation)
   // and refuses such a scene rather than silently leave them out.
   bool apply_track_irregularities = false;
+
+  // The scene at speed V, nothing else overridden (the tests' usual run).
+  static SceneOverrides at_speed(double speed_m_per_s) {
+    SceneOverrides o;
+    o.speed_m_per_s = speed_m_per_s;
+    return o;
+  }
 };
 
 struct PreparedScene {
