@@ -257,6 +257,20 @@ TEST(PlausibilityCant, DeficiencyAndExcessBeyondTheLineLimits) {
       << e->message;
 }
 
+// A canted straight: no speed balances the cant, so all of it is excess
+// (h_d = -|h|), whichever rail it raises; 120 mm > the 110 mm excess limit.
+TEST(PlausibilityCant, CantOnAStraightIsExcess) {
+  for (const double cant : {0.12, -0.12}) {
+    const ModelCheckReport r = check_case(
+        "coach_tangent", {{"track.start_cant_m", cant}, {"track.segments[0].end_cant_m", cant}}, 30.0);
+    const ModelWarning* e = find_warning(r, "cant_excess_beyond_limit");
+    ASSERT_NE(e, nullptr) << listing(r);
+    EXPECT_NE(e->message.find("cant excess " + printed(120.0) + " mm"), std::string::npos)
+        << e->message;
+    EXPECT_FALSE(r.has_warning("cant_deficiency_beyond_limit")) << listing(r);
+  }
+}
+
 // --- wheel-load balance and the steady shift -------------------------------------------------
 // Cant on the wrong rail at speed: the 80 kN against 22 kN.
 TEST(PlausibilityEquilibrium, UnbalancedWheelLoadsAreCaught) {

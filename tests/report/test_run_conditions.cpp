@@ -8,6 +8,7 @@
 #include "cli/run_cli.hpp"
 #include <railstab/scene_reading/load_scene.hpp>
 #include <railstab/io/sha256.hpp>
+#include <railstab/curving/steady_curving.hpp>
 #include <railstab/report/run_conditions.hpp>
 #include <railstab/setup/build_model.hpp>
 #include <railstab/setup/prepare_scene.hpp>
@@ -67,6 +68,14 @@ TEST(RunConditions, CantDeficiencyAndTrackInTheArc) {
   EXPECT_EQ(steady_state_file_stem("cases/thesis_bogie_tangent.toml", tangent), "thesis_bogie_tangent");
   EXPECT_EQ(steady_state_file_stem("x/../evil name;.toml", tangent), "evil_name_");
   EXPECT_EQ(run_conditions(tangent).cant_deficiency_m(30.0), 0.0);
+  // A canted straight: all excess, the report and the curving formula alike.
+  const Model canted = build_model(load_scene_file(
+      std::string(RAILSTAB_CASES_DIR) + "/thesis_bogie_tangent.toml",
+      {{"track.start_cant_m", -0.04}, {"track.segments[0].end_cant_m", -0.04}}));
+  const RunConditions cc = run_conditions(canted);
+  EXPECT_FALSE(cc.tangent);
+  EXPECT_NEAR(cc.cant_deficiency_m(30.0), -0.04, 1e-15);
+  EXPECT_NEAR(cant_deficiency_m(CurvingCondition{0.0, -0.04, 30.0}, 1.5, 9.81), -0.04, 1e-15);
 }
 
 namespace {

@@ -18,8 +18,11 @@ namespace railstab {
 
 namespace {
 
+// The cant on the curve's outer rail; on a straight no speed balances any
+// cant, so all of it counts as excess (h_outer = |h|, h_d = -|h|), as the
+// reports (report/run_conditions.hpp) and the plausibility check say.
 double outer_cant_m(double curvature_per_m, double cant_m) {
-  if (curvature_per_m == 0.0) return -std::abs(cant_m);
+  if (curvature_per_m == 0.0) return std::abs(cant_m);
   return curvature_per_m > 0.0 ? cant_m : -cant_m;
 }
 

@@ -48,7 +48,8 @@ struct CurvingCondition {
 };
 
 // h_d = D V^2 |kappa| / g - h_outer (the cant on the curve's outer rail:
-// h in a left-hand curve, -h in a right-hand one; on the straight -|h|).
+// h in a left-hand curve, -h in a right-hand one; on the straight |h|: a
+// canted straight is all cant excess, h_d = -|h|).
 double cant_deficiency_m(const CurvingCondition& c, double rail_contact_distance_m,
                          double gravity_m_per_s2);
 // V = sqrt(g R (h_d + h_outer) / D); throws std::invalid_argument when the

@@ -2,6 +2,7 @@
 
 #include <railstab/contact_geometry/profile_contact_geometry.hpp>
 #include <railstab/core/version.hpp>
+#include <railstab/curving/steady_curving.hpp>
 #include <railstab/io/file_names.hpp>
 #include <railstab/report/markdown_text.hpp>
 
@@ -55,12 +56,8 @@ std::string contact_description(const ModelContact& c) {
 }  // namespace
 
 double RunConditions::cant_deficiency_m(double speed_m_per_s) const {
-  if (curvature_per_m == 0.0) return -std::abs(cant_m);  // cant on a straight: all excess
-  // The outer rail is the right one in a left-hand curve (kappa > 0): its
-  // cant counts positive there, negative in a right-hand curve.
-  const double outer_cant = curvature_per_m > 0.0 ? cant_m : -cant_m;
-  return speed_m_per_s * speed_m_per_s * std::abs(curvature_per_m) * rail_contact_distance_m /
-             gravity_m_per_s2 - outer_cant;
+  return railstab::cant_deficiency_m(CurvingCondition{curvature_per_m, cant_m, speed_m_per_s},
+                                     rail_contact_distance_m, gravity_m_per_s2);
 }
 
 std::string RunConditions::track_description() const {

@@ -31,7 +31,8 @@ struct RunConditions {
 
   // Cant deficiency at speed V: the cant that would balance V^2 kappa,
   // V^2 |kappa| D / g, minus the cant on the curve's outer rail (m); 0 on
-  // the tangent. Negative: cant excess.
+  // the tangent, -|cant| on a canted straight. Negative: cant excess. The
+  // curving formula (curving/steady_curving.hpp), so the two agree.
   double cant_deficiency_m(double speed_m_per_s) const;
   // "tangent" or "arc R = 1000 m (left), cant 50 mm, at arc length 2000 m".
   std::string track_description() const;
