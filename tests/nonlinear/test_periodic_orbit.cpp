@@ -21,6 +21,7 @@
 #include <railstab/nonlinear/hopf_criticality.hpp>
 #include <railstab/nonlinear/model_orbits.hpp>
 #include <railstab/nonlinear/orbit_continuation.hpp>
+#include <railstab/nonlinear/bifurcation_analysis.hpp>
 #include <railstab/nonlinear/periodic_orbit.hpp>
 #include <railstab/nonlinear/variational_pass.hpp>
 #include <railstab/setup/prepare_scene.hpp>
@@ -191,6 +192,80 @@ TEST(PeriodicOrbitNormalForm, ChordIterationsEndOnTheSameOrbit) {
   EXPECT_LT(chord.sensitivity_flows, exact.sensitivity_flows);
   std::printf("[ chord    ] chord: %d iterations, %d with sensitivities; Newton: %d iterations\n",
               chord.newton_iterations, chord.sensitivity_flows, exact.newton_iterations);
+}
+
+// Every Newton iteration is reported once, numbered, with the orbit's CPU
+// so far; the first (no chord neighbour) with exact derivatives.
+TEST(PeriodicOrbitNormalForm, IterationProgressIsCalledOncePerIteration) {
+  ShootingOptions options = tight_shooting();
+  std::vector<ShootingIteration> seen;
+  options.iteration_progress = [&seen](const ShootingIteration& it) { seen.push_back(it); };
+  const PeriodicOrbit o = closed_form_orbit(options);
+  expect_closed_form_orbit(o);
+  ASSERT_EQ(int(seen.size()), o.newton_iterations);
+  for (size_t k = 0; k < seen.size(); ++k) {
+    EXPECT_EQ(seen[k].iteration, int(k) + 1);
+    if (k > 0) {
+      EXPECT_GE(seen[k].cpu_seconds, seen[k - 1].cpu_seconds);
+    }
+    EXPECT_TRUE(seen[k].exact_derivatives);
+  }
+  EXPECT_NEAR(seen.front().period_s, 1.02, 1e-15);  // the guess's
+  EXPECT_LE(seen.back().step_norm, options.stagnation_step_norm);
+}
+
+// A time-domain start (orbit_guess_from_samples) on a cycle with two maxima
+// per period, as flange hunting has where the flange throws the wheelset
+// back: x = sin(th) + 0.3 sin(3 th) + 0.05 sin(2 th), th = 2 pi t / T, has a
+// higher and a lower maximum each period (x'' > 0 at th = pi/2 between
+// them). The guess is the cycle (period T), starting at the higher maximum,
+// not a bounce between the two; its spread is nil.
+TEST(OrbitGuess, PrincipalMaximumGivesTheCycleNotTheBounce) {
+  const double T = 0.4873, w = 2.0 * kPi / T, dt = 1e-3;
+  auto x_of = [w](double t) {
+    return std::sin(w * t) + 0.3 * std::sin(3.0 * w * t) + 0.05 * std::sin(2.0 * w * t);
+  };
+  auto rate_of = [w](double t) {
+    return w * (std::cos(w * t) + 0.9 * std::cos(3.0 * w * t) + 0.1 * std::cos(2.0 * w * t));
+  };
+  std::vector<double> times;
+  std::vector<Eigen::VectorXd> states;
+  int maxima = 0;
+  for (double t = 0.0; t <= 3.0; t += dt) {
+    times.push_back(t);
+    states.emplace_back(Eigen::Vector2d(x_of(t), rate_of(t)));
+    if (states.size() > 1 && states[states.size() - 2](1) > 0.0 && states.back()(1) <= 0.0) ++maxima;
+  }
+  double x_max = -1e300;  // the higher maximum, on a fine grid
+  for (double t = 0.0; t < T; t += 1e-7) x_max = std::max(x_max, x_of(t));
+  const OrbitGuess g = orbit_guess_from_samples(times, states, kNormalFormCoords);
+  EXPECT_GE(maxima, 2 * 6);  // two maxima a period: counting every one would halve the cycle
+  EXPECT_NEAR(g.period_s, T, 1e-5 * T);
+  // Linear interpolation between samples at the maximum: dt^2 / 8 |x''| ~ 1e-4.
+  EXPECT_NEAR(g.start(0), x_max, 1e-4);
+  EXPECT_NEAR(g.start(1), 0.0, 1e-12);
+  // 6.2 periods: 5 or 6 complete cycles between upward mid-range crossings.
+  EXPECT_GE(g.cycles, 5);
+  EXPECT_LE(g.cycles, 6);
+  EXPECT_LT(g.spread(), 1e-4);
+}
+
+// A motion whose cycles differ (amplitude modulated by 10 % over 1.7 s):
+// its spread says so, above the bifurcation start's 1 % limit.
+TEST(OrbitGuess, SpreadMeasuresCyclesThatDiffer) {
+  const double T = 0.2, w = 2.0 * kPi / T;
+  std::vector<double> times;
+  std::vector<Eigen::VectorXd> states;
+  for (double t = 0.0; t <= 2.0; t += 1e-4) {
+    const double a = 1.0 + 0.1 * std::sin(2.0 * kPi * t / 1.7);
+    const double da = 0.1 * (2.0 * kPi / 1.7) * std::cos(2.0 * kPi * t / 1.7);
+    times.push_back(t);
+    states.emplace_back(Eigen::Vector2d(a * std::sin(w * t), da * std::sin(w * t) + a * w * std::cos(w * t)));
+  }
+  const OrbitGuess g = orbit_guess_from_samples(times, states, kNormalFormCoords);
+  EXPECT_GT(g.excursion_max - g.excursion_min, 0.1);  // of a half range near 1.1
+  EXPECT_GT(g.spread(), 0.1);
+  EXPECT_GT(g.spread(), kSettledCycleSpreadLimit);
 }
 
 TEST(PeriodicOrbitNormalForm, BadGuessesAndCoordinatesAreRefused) {

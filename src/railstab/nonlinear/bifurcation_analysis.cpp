@@ -8,6 +8,7 @@
 #include <cmath>
 #include <ctime>
 #include <iomanip>
+#include <memory>
 #include <sstream>
 
 namespace railstab {
@@ -33,6 +34,24 @@ ContinuationOptions continuation_for(const BifurcationOptions& o, const std::str
            << std::abs(orbit.critical_multiplier) << (orbit.stable ? " (stable)" : " (unstable)")
            << ", " << orbit.integration_steps << " steps, " << orbit.newton_iterations
            << " Newton iterations, " << std::setprecision(2) << orbit.cpu_seconds << " s CPU";
+      progress(line.str());
+    };
+  // Within an orbit (a corrector in flange contact can take minutes): a
+  // line when 10 s of the orbit's CPU have passed since the last, so a short
+  // orbit says nothing more than its line above. The counter restarts with
+  // each orbit (its CPU clock does).
+  if (o.progress)
+    c.shooting.iteration_progress = [progress = o.progress, origin,
+                                     last = std::make_shared<double>(0.0)](const ShootingIteration& it) {
+      if (it.cpu_seconds < *last) *last = 0.0;  // a new orbit
+      if (it.cpu_seconds - *last < 10.0) return;
+      *last = it.cpu_seconds;
+      std::ostringstream line;
+      line << "    " << origin << " branch, an orbit at " << std::fixed << std::setprecision(4)
+           << it.speed_m_per_s << " m/s: Newton iteration " << it.iteration << ", step "
+           << std::scientific << std::setprecision(2) << it.step_norm << " x the tolerance ("
+           << (it.exact_derivatives ? "exact derivatives" : "chord") << "), " << std::fixed
+           << std::setprecision(1) << it.cpu_seconds << " s CPU so far";
       progress(line.str());
     };
   if (o.progress)
@@ -91,10 +110,31 @@ BranchResult branch_from_time_domain(const Model& model, const FlowSystem& syste
     }
     const OrbitGuess guess = settled_cycle_guess(model, V, eq.state, r.reduced_states, r.coords,
                                                  o.disturbance_m, o.settle_time_s);
-    const ContinuationOptions c = continuation_for(o, "time-domain", r.coords, r.profile_contact);
-    const PeriodicOrbit first = solve_periodic_orbit(system, r.coords, OrbitConstraint::fixed_speed(V),
-                                                     guess.start, guess.period_s, V, c.shooting);
-    b.branch = continue_from_orbit(system, r.coords, first, o.cycle_speed_step_m_per_s, c);
+    // How periodic the settled run was: shooting needs a periodic orbit near
+    // the guess, and a motion whose cycles differ (the S1002 vehicle above
+    // 105 m/s: periods 2-8 % apart) has none, so Newton spends its
+    // iterations, minutes of them, for nothing. Said before the first orbit,
+    // and with its failure.
+    std::ostringstream settled;
+    settled << std::setprecision(4) << "the settled run's last " << guess.cycles
+            << " cycles: periods " << guess.period_min_s << "-" << guess.period_max_s
+            << " s, excursions " << 1e3 * guess.excursion_min << "-" << 1e3 * guess.excursion_max
+            << " mm";
+    const bool irregular = guess.spread() > kSettledCycleSpreadLimit;
+    if (irregular)
+      settled << ": not periodic to " << 100.0 * kSettledCycleSpreadLimit
+              << " % (still settling, or hunting that is not periodic at this speed; `railstab "
+                 "simulate` shows which; a lower --cycle-speed may settle on a periodic cycle)";
+    if (o.progress) o.progress("  time domain: " + settled.str() + "; the first orbit from it");
+    try {
+      const ContinuationOptions c = continuation_for(o, "time-domain", r.coords, r.profile_contact);
+      const PeriodicOrbit first = solve_periodic_orbit(
+          system, r.coords, OrbitConstraint::fixed_speed(V), guess.start, guess.period_s, V, c.shooting);
+      b.branch = continue_from_orbit(system, r.coords, first, o.cycle_speed_step_m_per_s, c);
+    } catch (const std::exception& e) {
+      b.error = e.what();
+      if (irregular) b.error += " (" + settled.str() + ")";
+    }
   } catch (const std::exception& e) {
     b.error = e.what();
   }

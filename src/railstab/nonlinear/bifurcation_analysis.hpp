@@ -29,6 +29,15 @@ namespace railstab {
 // 34.99 m/s; at 36 m/s (below V_c) the same start decays.
 inline constexpr double kDefaultCycleSpeedRatio = 1.03;
 
+// A time-domain start whose settled cycles differ by more than this
+// (OrbitGuess::spread: periods over their mean, principal maxima over the
+// half range) is said to be not periodic, before the first orbit and with
+// its failure. Measured on the S1002 thesis vehicle, 6 s from 5 mm, the
+// last second: 0.26 % (periods) and 0.16 % (maxima) at 100 m/s, where the
+// branch starts; 2.5 % and 1.4 % at 110 m/s, where the hunting is not
+// periodic (docs/nonlinear.md).
+inline constexpr double kSettledCycleSpreadLimit = 0.01;
+
 struct BifurcationOptions {
   CriticalSpeedOptions linear;            // the linear search's range and grid
   // Speed range and amplitude limit set from the run. On profile contact the

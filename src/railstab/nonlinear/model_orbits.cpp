@@ -79,18 +79,24 @@ OrbitGuess settled_cycle_guess(const Model& model, double speed_m_per_s,
   const Trajectory run = integrate(model, speed_m_per_s, x, options);
   if (!run.stopped_early.empty())
     throw std::runtime_error("the time-domain run stopped early: " + run.stopped_early);
-  // The last second (or half the run): the settled motion.
-  const double from = std::max(0.5 * settle_time_s, settle_time_s - 1.0);
+  // The settled motion: the last second, or the second half of the run
+  // where the last second holds fewer than two complete cycles (the S1002
+  // bogie's 0.48 s cycle at 41 m/s).
+  auto window = [&](double from, std::vector<double>& times, std::vector<Eigen::VectorXd>& states,
+                    double& lo, double& hi) {
+    lo = 1e300, hi = -1e300;
+    for (size_t k = 0; k < run.times_s.size(); ++k)
+      if (run.times_s[k] >= from) {
+        times.push_back(run.times_s[k]);
+        states.push_back(reduce_state(reduced_states, run.states[k]));
+        lo = std::min(lo, states.back()(coords.amplitude_state));
+        hi = std::max(hi, states.back()(coords.amplitude_state));
+      }
+  };
   std::vector<double> times;
   std::vector<Eigen::VectorXd> states;
-  double lo = 1e300, hi = -1e300;
-  for (size_t k = 0; k < run.times_s.size(); ++k)
-    if (run.times_s[k] >= from) {
-      times.push_back(run.times_s[k]);
-      states.push_back(reduce_state(reduced_states, run.states[k]));
-      lo = std::min(lo, states.back()(coords.amplitude_state));
-      hi = std::max(hi, states.back()(coords.amplitude_state));
-    }
+  double lo = 0.0, hi = 0.0;
+  window(std::max(0.5 * settle_time_s, settle_time_s - 1.0), times, states, lo, hi);
   if (!(hi - lo > 2e-6)) {
     std::ostringstream msg;
     msg << "no self-sustained oscillation at " << speed_m_per_s << " m/s: the run from a "
@@ -98,7 +104,13 @@ OrbitGuess settled_cycle_guess(const Model& model, double speed_m_per_s,
         << " mm peak after " << settle_time_s << " s";
     throw std::runtime_error(msg.str());
   }
-  return orbit_guess_from_samples(times, states, coords);
+  try {
+    return orbit_guess_from_samples(times, states, coords);
+  } catch (const std::runtime_error&) {
+    times.clear(), states.clear();
+    window(0.5 * settle_time_s, times, states, lo, hi);
+    return orbit_guess_from_samples(times, states, coords);
+  }
 }
 
 }  // namespace railstab

@@ -170,6 +170,9 @@ PeriodicOrbit solve_periodic_orbit(const FlowSystem& system, const OrbitCoordina
         std::max({state_norm, std::abs(dz(n)) / (options.newton_relative_tolerance * T),
                   std::abs(dz(n + 1)) / (options.newton_relative_tolerance * std::max(1.0, std::abs(V)))});
     orbit.newton_iterations = iteration;
+    if (options.iteration_progress)
+      options.iteration_progress({iteration, step_norm, V, T, exact,
+                                  double(std::clock() - cpu0) / CLOCKS_PER_SEC});
     // Converged: the step is within the tolerance, or within
     // stagnation_step_norm of it and no longer halving: the flow's own error
     // is the floor (a period's global error can exceed the tolerance). The
@@ -298,27 +301,66 @@ OrbitSpeedTangent orbit_speed_tangent(const PeriodicOrbit& orbit, const OrbitCoo
   return t;
 }
 
+double OrbitGuess::spread() const {
+  const double periods = (period_max_s - period_min_s) / (0.5 * (period_max_s + period_min_s));
+  const double excursions = half_range > 0.0 ? (excursion_max - excursion_min) / half_range : 0.0;
+  return std::max(periods, excursions);
+}
+
 OrbitGuess orbit_guess_from_samples(const std::vector<double>& times_s,
                                     const std::vector<Eigen::VectorXd>& states,
                                     const OrbitCoordinates& coords) {
-  const int is = coords.section_state;
-  // Crossings of x[is] from + to - (a maximum of x[ia] when x[is] is its rate).
-  std::vector<std::pair<double, Eigen::VectorXd>> crossings;
-  for (size_t k = 1; k < states.size(); ++k) {
-    const double a = states[k - 1](is), b = states[k](is);
-    if (a > 0.0 && b <= 0.0) {
-      const double s = a / (a - b);
-      crossings.emplace_back(times_s[k - 1] + s * (times_s[k] - times_s[k - 1]),
-                             states[k - 1] + s * (states[k] - states[k - 1]));
-    }
-  }
-  if (crossings.size() < 2)
-    throw std::runtime_error(
+  const int is = coords.section_state, ia = coords.amplitude_state;
+  const auto too_few = [] {
+    return std::runtime_error(
         "periodic orbit: the run holds fewer than two periods of the leading wheelset's lateral "
         "motion (no oscillation to start from)");
+  };
+  if (states.size() < 2) throw too_few();
+  double lo = states.front()(ia), hi = lo;
+  for (const Eigen::VectorXd& x : states) lo = std::min(lo, x(ia)), hi = std::max(hi, x(ia));
+  const double mid = 0.5 * (lo + hi);
+  // Maxima (the rate falling through 0), interpolated; and the cycle each
+  // lies in (the number of upward mid-range crossings before it).
+  struct Maximum {
+    double t;
+    Eigen::VectorXd x;
+    int cycle;
+  };
+  std::vector<Maximum> maxima;
+  int cycle = -1;  // before the first upward crossing: no complete cycle yet
+  for (size_t k = 1; k < states.size(); ++k) {
+    if (states[k - 1](ia) < mid && states[k](ia) >= mid) ++cycle;
+    const double a = states[k - 1](is), b = states[k](is);
+    if (a > 0.0 && b <= 0.0 && cycle >= 0) {
+      const double s = a / (a - b);
+      maxima.push_back({times_s[k - 1] + s * (times_s[k] - times_s[k - 1]),
+                        states[k - 1] + s * (states[k] - states[k - 1]), cycle});
+    }
+  }
+  // The principal maximum of each complete cycle (0 .. cycle - 1; the last,
+  // still open at the run's end, is left out).
+  std::vector<const Maximum*> principal(size_t(std::max(cycle, 0)), nullptr);
+  for (const Maximum& m : maxima)
+    if (m.cycle < cycle && (!principal[size_t(m.cycle)] || m.x(ia) > principal[size_t(m.cycle)]->x(ia)))
+      principal[size_t(m.cycle)] = &m;
+  principal.erase(std::remove(principal.begin(), principal.end(), nullptr), principal.end());
+  if (principal.size() < 2) throw too_few();
   OrbitGuess g;
-  g.start = crossings.back().second;
-  g.period_s = crossings.back().first - crossings[crossings.size() - 2].first;
+  g.start = principal.back()->x;
+  g.period_s = principal.back()->t - principal[principal.size() - 2]->t;
+  g.cycles = int(principal.size());
+  g.half_range = 0.5 * (hi - lo);
+  g.period_min_s = g.period_max_s = g.period_s;
+  g.excursion_min = g.excursion_max = g.start(ia);
+  for (size_t k = 0; k < principal.size(); ++k) {
+    g.excursion_min = std::min(g.excursion_min, principal[k]->x(ia));
+    g.excursion_max = std::max(g.excursion_max, principal[k]->x(ia));
+    if (k == 0) continue;
+    const double period = principal[k]->t - principal[k - 1]->t;
+    g.period_min_s = std::min(g.period_min_s, period);
+    g.period_max_s = std::max(g.period_max_s, period);
+  }
   return g;
 }
 

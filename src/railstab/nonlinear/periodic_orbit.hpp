@@ -50,6 +50,7 @@
 #include <Eigen/Dense>
 
 #include <complex>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -66,6 +67,15 @@ struct OrbitConstraint {
   double reference_speed_m_per_s = 0.0, reference_amplitude = 0.0;
   static OrbitConstraint fixed_speed(double V) { return {1.0, 0.0, V, 0.0}; }
   static OrbitConstraint fixed_excursion(double a) { return {0.0, 1.0, 0.0, a}; }
+};
+
+// One Newton iteration of an orbit, as it is taken (for progress).
+struct ShootingIteration {
+  int iteration = 0;
+  double step_norm = 0.0;       // the Newton step in units of the tolerance
+  double speed_m_per_s = 0.0, period_s = 0.0;  // where the iteration starts
+  bool exact_derivatives = false;  // false: a chord step (an earlier matrix)
+  double cpu_seconds = 0.0;     // this orbit's so far
 };
 
 struct ShootingOptions {
@@ -101,6 +111,10 @@ struct ShootingOptions {
   int samples_per_period = 200;  // for the amplitudes
   // A multiplier counts as on the unit circle within this of modulus 1.
   double multiplier_tolerance = 1e-6;
+  // Called once per Newton iteration, after its step is known: an orbit in
+  // flange contact takes up to minutes, so a caller can report within one
+  // (bifurcation_analysis.cpp throttles it to a line per 10 s).
+  std::function<void(const ShootingIteration&)> iteration_progress;
 };
 
 struct PeriodicOrbit {
@@ -159,13 +173,28 @@ OrbitSpeedTangent orbit_speed_tangent(const PeriodicOrbit& orbit, const OrbitCoo
 void classify_floquet_multipliers(PeriodicOrbit& orbit, const Eigen::VectorXd& flow_direction,
                                   double multiplier_tolerance);
 
-// An orbit from a time-domain run: the state where the last full period
-// begins (a maximum of x[amplitude_state], x[section_state] falling through
-// 0, interpolated between samples) and the period from the last two such
-// crossings. Throws std::runtime_error when the run holds fewer than two.
+// An orbit from a time-domain run: the state at the principal maximum of
+// x[amplitude_state] in the run's last complete cycle, and the period from
+// that maximum to the one before. A cycle runs from one upward crossing of
+// the mid-range (max + min) / 2 of x[amplitude_state] to the next; its
+// principal maximum is the highest of its maxima (x[section_state], the
+// rate, falling through 0; interpolated between samples). Flange hunting
+// has a second, lower maximum in each cycle where the flange throws the
+// wheelset back (the S1002 vehicle above 105 m/s): counting every maximum
+// would give a period of a bounce, not of the cycle. The periods and the
+// principal maxima of all complete cycles measure how periodic the motion
+// was. Throws std::runtime_error when the run holds fewer than two cycles.
 struct OrbitGuess {
   Eigen::VectorXd start;
   double period_s = 0.0;
+  int cycles = 0;               // complete cycles in the samples
+  double period_min_s = 0.0, period_max_s = 0.0;  // between successive principal maxima
+  double excursion_min = 0.0, excursion_max = 0.0;  // the principal maxima of x[amplitude_state]
+  double half_range = 0.0;      // (max - min) / 2 of x[amplitude_state] over the samples
+  // The larger of the periods' spread (max - min) over their mean and the
+  // principal maxima's spread over half_range: 0 for a periodic motion
+  // sampled finely.
+  double spread() const;
 };
 OrbitGuess orbit_guess_from_samples(const std::vector<double>& times_s,
                                     const std::vector<Eigen::VectorXd>& states,
