@@ -94,38 +94,62 @@ BranchResult branch_from_hopf(const Model& model, const FlowSystem& system, Bifu
   return b;
 }
 
+// The settled cycles' periods and principal maxima, as the progress line
+// and a failure say them; with the "not periodic" verdict where they spread
+// beyond kSettledCycleSpreadLimit.
+std::string settled_cycles_text(const OrbitGuess& guess, bool irregular) {
+  std::ostringstream settled;
+  settled << std::setprecision(4) << "the settled run's last " << guess.cycles
+          << " cycles: periods " << guess.period_min_s << "-" << guess.period_max_s
+          << " s, excursions " << 1e3 * guess.excursion_min << "-" << 1e3 * guess.excursion_max
+          << " mm";
+  if (irregular)
+    settled << ": not periodic to " << 100.0 * kSettledCycleSpreadLimit
+            << " % (still settling, or hunting that is not periodic at this speed; `railstab "
+               "simulate` shows which; a lower --cycle-speed may settle on a periodic cycle)";
+  return settled.str();
+}
+
 BranchResult branch_from_time_domain(const Model& model, const FlowSystem& system,
                                      const Eigen::VectorXd& equilibrium, double speed,
                                      BifurcationResult& r, const BifurcationOptions& o) {
   BranchResult b;
   b.origin = "time_domain";
-  const double V = r.cycle_speed_m_per_s;
   try {
-    const EquilibriumResult eq = continue_equilibrium_in_speed(model, speed, equilibrium, V, {});
-    if (o.progress) {
-      std::ostringstream line;
-      line << "  time domain: " << o.settle_time_s << " s at " << V << " m/s from a "
-           << 1e3 * o.disturbance_m << " mm displacement";
-      o.progress(line.str());
-    }
-    const OrbitGuess guess = settled_cycle_guess(model, V, eq.state, r.reduced_states, r.coords,
-                                                 o.disturbance_m, o.settle_time_s);
     // How periodic the settled run was: shooting needs a periodic orbit near
     // the guess, and a motion whose cycles differ (the S1002 vehicle above
     // 105 m/s: periods 2-8 % apart) has none, so Newton spends its
     // iterations, minutes of them, for nothing. Said before the first orbit,
-    // and with its failure.
-    std::ostringstream settled;
-    settled << std::setprecision(4) << "the settled run's last " << guess.cycles
-            << " cycles: periods " << guess.period_min_s << "-" << guess.period_max_s
-            << " s, excursions " << 1e3 * guess.excursion_min << "-" << 1e3 * guess.excursion_max
-            << " mm";
-    const bool irregular = guess.spread() > kSettledCycleSpreadLimit;
-    if (irregular)
-      settled << ": not periodic to " << 100.0 * kSettledCycleSpreadLimit
-              << " % (still settling, or hunting that is not periodic at this speed; `railstab "
-                 "simulate` shows which; a lower --cycle-speed may settle on a periodic cycle)";
-    if (o.progress) o.progress("  time domain: " + settled.str() + "; the first orbit from it");
+    // and with its failure. The default start (not a speed the user gave)
+    // then tries kDefaultStartLowering lower, up to kDefaultStartTries
+    // times, within the range.
+    OrbitGuess guess;
+    bool irregular = false;
+    for (int attempt = 0;; ++attempt) {
+      const double V = r.cycle_speed_m_per_s;
+      const EquilibriumResult eq = continue_equilibrium_in_speed(model, speed, equilibrium, V, {});
+      if (o.progress) {
+        std::ostringstream line;
+        line << "  time domain: " << o.settle_time_s << " s at " << V << " m/s from a "
+             << 1e3 * o.disturbance_m << " mm displacement";
+        o.progress(line.str());
+      }
+      guess = settled_cycle_guess(model, V, eq.state, r.reduced_states, r.coords, o.disturbance_m,
+                                  o.settle_time_s);
+      irregular = guess.spread() > kSettledCycleSpreadLimit;
+      const double lower = kDefaultStartLowering * V;
+      if (!irregular || !r.cycle_speed_default || attempt + 1 >= kDefaultStartTries ||
+          lower < o.linear.from_m_per_s)
+        break;
+      if (o.progress)
+        o.progress("  time domain: " + settled_cycles_text(guess, false) +
+                   ": not periodic; the default start tries a lower speed");
+      r.cycle_speeds_not_periodic_m_per_s.push_back(V);
+      r.cycle_speed_m_per_s = lower;
+    }
+    const double V = r.cycle_speed_m_per_s;
+    const std::string settled = settled_cycles_text(guess, irregular);
+    if (o.progress) o.progress("  time domain: " + settled + "; the first orbit from it");
     try {
       const ContinuationOptions c = continuation_for(o, "time-domain", r.coords, r.profile_contact);
       const PeriodicOrbit first = solve_periodic_orbit(
@@ -133,7 +157,7 @@ BranchResult branch_from_time_domain(const Model& model, const FlowSystem& syste
       b.branch = continue_from_orbit(system, r.coords, first, o.cycle_speed_step_m_per_s, c);
     } catch (const std::exception& e) {
       b.error = e.what();
-      if (irregular) b.error += " (" + settled.str() + ")";
+      if (irregular) b.error += " (" + settled + ")";
     }
   } catch (const std::exception& e) {
     b.error = e.what();

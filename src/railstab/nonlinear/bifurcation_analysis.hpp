@@ -32,11 +32,19 @@ inline constexpr double kDefaultCycleSpeedRatio = 1.03;
 // A time-domain start whose settled cycles differ by more than this
 // (OrbitGuess::spread: periods over their mean, principal maxima over the
 // half range) is said to be not periodic, before the first orbit and with
-// its failure. Measured on the S1002 thesis vehicle, 6 s from 5 mm, the
-// last second: 0.26 % (periods) and 0.16 % (maxima) at 100 m/s, where the
-// branch starts; 2.5 % and 1.4 % at 110 m/s, where the hunting is not
-// periodic (docs/nonlinear.md).
+// its failure. Measured on the S1002 thesis vehicle, 6 s from 5 mm, over
+// the run's second half (15-20 cycles): at most 0.3 % (periods) and 0.2 %
+// (maxima) at 100 and 104.7 m/s, where periodic orbits exist; 1.6-2.6 % and
+// 0.9-1.2 % at 110 m/s, 12.6 % and 2.2 % at 122 m/s, where the hunting is
+// not periodic (docs/nonlinear.md). Over the last second alone 110 m/s
+// could pass (0.7 %): the motion is irregular over longer than a second.
 inline constexpr double kSettledCycleSpreadLimit = 0.01;
+// Where the default start's settled run is not periodic, it is tried again
+// at 0.95 x the speed, up to 6 runs in all (122.1 m/s down to at most
+// 94.5 m/s on the S1002 vehicle; each run 3-4 s CPU there, against minutes
+// of Newton iterations on a motion with no periodic orbit).
+inline constexpr double kDefaultStartLowering = 0.95;
+inline constexpr int kDefaultStartTries = 6;
 
 struct BifurcationOptions {
   CriticalSpeedOptions linear;            // the linear search's range and grid
@@ -141,6 +149,9 @@ struct BifurcationResult {
   // was given; where the default could not apply, why (no branch then).
   double cycle_speed_m_per_s = 0.0;
   bool cycle_speed_default = false;
+  // The default start's speeds whose settled run was not periodic, tried
+  // and left for cycle_speed_m_per_s (kDefaultStartLowering).
+  std::vector<double> cycle_speeds_not_periodic_m_per_s;
   bool cycle_branch_upwards = false;      // the sign of cycle_speed_step_m_per_s
   std::string no_default_cycle_reason;
   double cpu_seconds = 0.0;

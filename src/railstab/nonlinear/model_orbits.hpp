@@ -34,11 +34,11 @@ HopfStart model_hopf_start(const Model& model, const std::vector<int>& reduced_s
 // steady state at speed_m_per_s, full state) with the amplitude state moved
 // by disturbance_m, run for settle_time_s by integrate() with `options`
 // (its t_end_s replaced; output every 1 ms unless options say finer); the
-// last second of the run (its second half where the last second holds
-// fewer than two complete cycles, or the run is shorter than 2 s) gives the
-// orbit's start, period and the cycles' spread (orbit_guess_from_samples).
+// second half of the run gives the orbit's start (in its last complete
+// cycle), period and the cycles' spread (orbit_guess_from_samples).
 // Throws std::runtime_error, saying why, when the run stops early, decays
-// to below 2 um peak-to-peak, or holds fewer than two complete cycles.
+// to below 2 um peak-to-peak in its last second (or half), or holds fewer
+// than two complete cycles.
 OrbitGuess settled_cycle_guess(const Model& model, double speed_m_per_s,
                                const Eigen::VectorXd& equilibrium_full,
                                const std::vector<int>& reduced_states, const OrbitCoordinates& coords,

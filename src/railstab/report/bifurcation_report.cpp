@@ -115,6 +115,9 @@ void write_json(std::ostream& out, const Model& model, const BifurcationResult& 
   else
     j.key("cycle_speed_m_per_s").null();
   j.field("cycle_speed_default", r.cycle_speed_default);
+  j.key("cycle_speeds_not_periodic_m_per_s").begin_array();
+  for (double v : r.cycle_speeds_not_periodic_m_per_s) j.value(v);
+  j.end_array();
   j.field("cycle_direction", std::string(r.cycle_branch_upwards ? "up" : "down"));
   if (r.no_default_cycle_reason.empty())
     j.key("no_cycle_branch_reason").null();
@@ -411,9 +414,18 @@ void write_markdown(std::ostream& md, const Model& model, const BifurcationResul
     md << "### Branch from the " << (b.origin == "hopf" ? "Hopf point" : "time-domain cycle");
     if (b.origin == "time_domain") {
       md << " at " << speed_text(r.cycle_speed_m_per_s);
-      if (r.cycle_speed_default)
+      if (r.cycle_speed_default && r.cycle_speeds_not_periodic_m_per_s.empty())
         md << " (the default start on profile contact: " << kDefaultCycleSpeedRatio
            << " x the linear critical speed)";
+      if (r.cycle_speed_default && !r.cycle_speeds_not_periodic_m_per_s.empty()) {
+        md << " (the default start on profile contact, " << kDefaultCycleSpeedRatio
+           << " x the linear critical speed, lowered by " << kDefaultStartLowering
+           << " where the settled run was not periodic to " << 100.0 * kSettledCycleSpreadLimit
+           << " %: at";
+        for (size_t k = 0; k < r.cycle_speeds_not_periodic_m_per_s.size(); ++k)
+          md << (k ? "," : "") << " " << speed_text(r.cycle_speeds_not_periodic_m_per_s[k]);
+        md << ")";
+      }
       md << ", followed " << (r.cycle_branch_upwards ? "upwards" : "downwards") << " in speed first";
     }
     md << "\n\n";
