@@ -22,6 +22,7 @@
 #include <railstab/nonlinear/speed_ramp.hpp>
 #include <railstab/setup/prepare_scene.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <cstdio>
@@ -44,6 +45,78 @@ BifurcationOptions time_domain_branch_options(double from_m_per_s, double to_m_p
   o.max_amplitude_m = 0.008;
   o.continuation.max_orbits = max_orbits;
   return o;
+}
+
+// Issue 22: the nonlinear critical speed by continuation against the ramp
+// method at two rates, both computed here (no number of either put in).
+// The branch from the cycle a run from 5 mm settles on at cycle_speed is
+// followed down to its first fold; a ramp started on that cycle follows it
+// down to the fold and loses its hunting below it, later by a speed delay
+// d(a) that shrinks with the rate a: d ~ a^p, p = 2/3 for the slow passage
+// through a saddle-node (the orbit lingers near its ghost for a time ~
+// a^(-1/3)) and 1 for the decay after it, so 1/2 <= p <= 1 bounds it with
+// room. Two rates a1 > a2 with end speeds V1 < V2 then put the zero-rate
+// limit (the fold) at V2 + (V2 - V1) r / (1 - r), r = (a2/a1)^p, i.e. in
+// [V2 + 0.67 (V2 - V1), V2 + 1.72 (V2 - V1)] for a2/a1 = 0.4: the "spread
+// of the ramp method at two rates" the fold must lie in, below V_c.
+void expect_fold_in_the_ramps_bracket(const std::string& case_file, const std::string& tag,
+                                      double from_m_per_s, double to_m_per_s, int max_orbits,
+                                      double cycle_speed_m_per_s, double ramp_end_m_per_s) {
+  SceneOverrides overrides;
+  overrides.values = {SceneValueSetting("track.segments[0].length_m", 5000.0)};
+  const PreparedScene scene =
+      prepare_scene(std::string(RAILSTAB_CASES_DIR) + "/" + case_file, overrides);
+  BifurcationOptions o = time_domain_branch_options(from_m_per_s, to_m_per_s, max_orbits);
+  o.cycle_speed_m_per_s = cycle_speed_m_per_s;
+  o.continuation.stop_at_first_fold = true;
+  const std::string prefix = "[ " + tag + std::string(std::max<size_t>(1, 9 - tag.size()), ' ') + "] ";
+  int failure_lines = 0;
+  o.progress = [&failure_lines, &prefix](const std::string& line) {
+    std::printf("%s%s\n", prefix.c_str(), line.c_str());
+    failure_lines += line.find("corrector failed") != std::string::npos;
+  };
+  const BifurcationResult r =
+      analyse_bifurcation(scene.model, scene.equilibrium.state, scene.speed_m_per_s, o);
+  ASSERT_TRUE(r.linear.critical_speed_found);
+  ASSERT_EQ(r.branches.size(), 1u);
+  ASSERT_TRUE(r.branches[0].error.empty()) << r.branches[0].error;
+  const OrbitBranch& branch = r.branches[0].branch;
+  EXPECT_EQ(branch.stop_reason, "stopped past the first fold (stop at fold)");
+  EXPECT_EQ(failure_lines, branch.failed_correctors);  // each failure is said on stderr
+  ASSERT_TRUE(r.nonlinear.found) << r.nonlinear.explanation;
+  ASSERT_EQ(r.nonlinear.bound, StableBound::fold) << r.nonlinear.explanation;
+  const double fold = r.nonlinear.speed_m_per_s;
+  const PeriodicOrbit& first = branch.orbits.front();
+  ASSERT_TRUE(first.stable);
+  std::printf("%sV_c %.3f m/s; first orbit %.4f mm at %.2f m/s; fold %.4f m/s after %zu orbits, "
+              "%.1f s CPU\n",
+              prefix.c_str(), r.linear.critical_speed_m_per_s,
+              1e3 * first.amplitude(r.coords.amplitude_state), first.speed_m_per_s, fold,
+              branch.orbits.size(), branch.cpu_seconds);
+  EXPECT_LT(fold, first.speed_m_per_s);
+  EXPECT_LT(fold, r.linear.critical_speed_m_per_s);
+
+  // The ramps from the first orbit (on the stable cycle).
+  std::vector<double> ends;
+  for (double a : {0.5, 0.2}) {
+    SpeedRampOptions ramp;
+    ramp.start_speed_m_per_s = first.speed_m_per_s;
+    ramp.ramp_rate_m_per_s2 = a;
+    ramp.end_speed_m_per_s = ramp_end_m_per_s;
+    ramp.integration = integration_options_for(scene.spec.simulation);
+    const SpeedRampResult run =
+        run_speed_ramp(scene.model, embed_state(scene.model, r.reduced_states, first.start), ramp);
+    ASSERT_TRUE(run.vanished) << run.outcome;
+    ends.push_back(run.hunting_end_speed_m_per_s);
+    std::printf("%sramp %.1f m/s^2 from %.1f m/s: hunting ends at %.4f m/s (%.1f s CPU)\n",
+                prefix.c_str(), a, first.speed_m_per_s, ends.back(),
+                run.trajectory.stats.cpu_seconds);
+  }
+  EXPECT_LT(ends[0], ends[1]);  // the slower ramp nearer the fold
+  EXPECT_LT(ends[1], fold);     // a ramp cannot lose a stable cycle above its fold
+  const double spread = ends[1] - ends[0];
+  EXPECT_GT(fold, ends[1] + 0.67 * spread);
+  EXPECT_LT(fold, ends[1] + 1.72 * spread);
 }
 
 }  // namespace
@@ -244,131 +317,25 @@ TEST(ProfileContactOrbit, S1002BogieCycleBranchCanBeFollowedUpwards) {
                std::invalid_argument);
 }
 
-// Issue 22, the same comparison on the thesis bogie on S1002/UIC60 (32
-// states, linear critical speed 39.80 m/s): the branch from the cycle a run
-// from 5 mm settles on at 38 m/s (4.96 mm, |mu| 0.023) is stable down to
-// its fold near 35.0 m/s (docs/nonlinear.md: 34.99 from the 41 m/s cycle,
-// a flat fold); two ramps from that cycle bracket the fold as for the
-// vehicle below (the bracket and why: there). About 110 s CPU: 11 orbits
-// and three failed correctors at the fold, and the ramps.
+// Issue 22: the nonlinear critical speed of the thesis bogie on S1002/UIC60
+// (32 states, linear critical speed 39.80 m/s) against the ramp method at
+// two rates (expect_fold_in_the_ramps_bracket): the branch from the cycle a
+// run from 5 mm settles on at 38 m/s (4.96 mm, |mu| 0.023) is stable down
+// to its fold near 35.0 m/s (docs/nonlinear.md: 34.99 from the 41 m/s
+// cycle, a flat fold). About 110 s CPU: 11 orbits and three failed
+// correctors at the fold, and the ramps.
 TEST(ProfileContactOrbit, S1002BogieFoldLiesWhereItsRampsTendAtZeroRate) {
-  SceneOverrides overrides;
-  overrides.values = {SceneValueSetting("track.segments[0].length_m", 5000.0)};
-  const PreparedScene scene =
-      prepare_scene(std::string(RAILSTAB_CASES_DIR) + "/thesis_bogie_s1002_tangent.toml", overrides);
-  BifurcationOptions o = time_domain_branch_options(20.0, 50.0, 30);
-  o.cycle_speed_m_per_s = 38.0;
-  o.continuation.stop_at_first_fold = true;
-  o.progress = [](const std::string& line) { std::printf("[ bogie    ] %s\n", line.c_str()); };
-  const BifurcationResult r =
-      analyse_bifurcation(scene.model, scene.equilibrium.state, scene.speed_m_per_s, o);
-  ASSERT_TRUE(r.linear.critical_speed_found);
-  ASSERT_EQ(r.branches.size(), 1u);
-  ASSERT_TRUE(r.branches[0].error.empty()) << r.branches[0].error;
-  const OrbitBranch& branch = r.branches[0].branch;
-  EXPECT_EQ(branch.stop_reason, "stopped past the first fold (stop at fold)");
-  ASSERT_TRUE(r.nonlinear.found) << r.nonlinear.explanation;
-  ASSERT_EQ(r.nonlinear.bound, StableBound::fold) << r.nonlinear.explanation;
-  const double fold = r.nonlinear.speed_m_per_s;
-  const PeriodicOrbit& first = branch.orbits.front();
-  ASSERT_TRUE(first.stable);
-  std::printf("[ bogie    ] V_c %.3f m/s; first orbit %.4f mm at %.2f m/s; fold %.4f m/s after %zu "
-              "orbits, %.1f s CPU\n",
-              r.linear.critical_speed_m_per_s, 1e3 * first.amplitude(r.coords.amplitude_state),
-              first.speed_m_per_s, fold, branch.orbits.size(), branch.cpu_seconds);
-  EXPECT_LT(fold, first.speed_m_per_s);
-  EXPECT_LT(fold, r.linear.critical_speed_m_per_s);
-
-  std::vector<double> ends;
-  for (double a : {0.5, 0.2}) {
-    SpeedRampOptions ramp;
-    ramp.start_speed_m_per_s = first.speed_m_per_s;
-    ramp.ramp_rate_m_per_s2 = a;
-    ramp.end_speed_m_per_s = 25.0;
-    ramp.integration = integration_options_for(scene.spec.simulation);
-    const SpeedRampResult run =
-        run_speed_ramp(scene.model, embed_state(scene.model, r.reduced_states, first.start), ramp);
-    ASSERT_TRUE(run.vanished) << run.outcome;
-    ends.push_back(run.hunting_end_speed_m_per_s);
-    std::printf("[ bogie    ] ramp %.1f m/s^2 from %.1f m/s: hunting ends at %.4f m/s (%.1f s CPU)\n",
-                a, first.speed_m_per_s, ends.back(), run.trajectory.stats.cpu_seconds);
-  }
-  EXPECT_LT(ends[0], ends[1]);  // the slower ramp nearer the fold
-  EXPECT_LT(ends[1], fold);     // a ramp cannot lose a stable cycle above its fold
-  const double spread = ends[1] - ends[0];
-  EXPECT_GT(fold, ends[1] + 0.67 * spread);
-  EXPECT_LT(fold, ends[1] + 1.72 * spread);
+  expect_fold_in_the_ramps_bracket("thesis_bogie_s1002_tangent.toml", "bogie", 20.0, 50.0, 30,
+                                   38.0, 25.0);
 }
 
-// Issue 22: the nonlinear critical speed of the thesis vehicle on S1002/UIC60
-// (82 states, linear critical speed 118.53 m/s) by continuation, against the
-// ramp method at two rates. The branch from the cycle a run from 5 mm
-// settles on at 77 m/s (0.81 mm) is stable down to a fold at 75.89 m/s
-// (`railstab bifurcation cases/thesis_vehicle_s1002_tangent.toml
-// --cycle-speed 77 --no-hopf-branch`, docs/nonlinear.md). A ramp started on
-// that cycle follows it down to the fold and loses its hunting below it,
-// later by a speed delay d(a) that shrinks with the rate a: d ~ a^p, p = 2/3
-// for the slow passage through a saddle-node (the orbit lingers near its
-// ghost for a time ~ a^(-1/3)) and 1 for the decay after it, so 1/2 <= p <= 1
-// bounds it with room. Two rates a1 > a2 with end speeds V1 < V2 then put
-// the zero-rate limit (the fold) at V2 + (V2 - V1) r / (1 - r), r = (a2/a1)^p,
-// i.e. in [V2 + 0.67 (V2 - V1), V2 + 1.72 (V2 - V1)] for a2/a1 = 0.4: the
-// "spread of the ramp method at two rates" the fold must lie in. No number of
-// either method is put in: both are computed here (the bogie: the test
-// above).
+// The same on the thesis vehicle (82 states, linear critical speed
+// 118.53 m/s): the branch from the cycle a run from 5 mm settles on at
+// 77 m/s (0.81 mm) is stable down to a fold at 75.89 m/s (`railstab
+// bifurcation cases/thesis_vehicle_s1002_tangent.toml --cycle-speed 77
+// --no-hopf-branch`, docs/nonlinear.md). The fold comes after 6-10 orbits,
+// each 3-15 s CPU, and correctors that fail near it cost as much again.
 TEST(ProfileContactOrbit, S1002VehicleFoldLiesWhereItsRampsTendAtZeroRate) {
-  SceneOverrides overrides;
-  overrides.values = {SceneValueSetting("track.segments[0].length_m", 5000.0)};
-  const PreparedScene scene =
-      prepare_scene(std::string(RAILSTAB_CASES_DIR) + "/thesis_vehicle_s1002_tangent.toml", overrides);
-  // The fold comes after 6-10 orbits, each 3-15 s CPU, and correctors that
-  // fail near it cost as much again; the branch stops two orbits past it.
-  BifurcationOptions o = time_domain_branch_options(60.0, 125.0, 16);
-  o.cycle_speed_m_per_s = 77.0;
-  o.continuation.stop_at_first_fold = true;
-  int failure_lines = 0;
-  o.progress = [&failure_lines](const std::string& line) {
-    std::printf("[ vehicle  ] %s\n", line.c_str());
-    failure_lines += line.find("corrector failed") != std::string::npos;
-  };
-  const BifurcationResult r =
-      analyse_bifurcation(scene.model, scene.equilibrium.state, scene.speed_m_per_s, o);
-  ASSERT_TRUE(r.linear.critical_speed_found);
-  ASSERT_EQ(r.branches.size(), 1u);
-  ASSERT_TRUE(r.branches[0].error.empty()) << r.branches[0].error;
-  const OrbitBranch& branch = r.branches[0].branch;
-  EXPECT_EQ(branch.stop_reason, "stopped past the first fold (stop at fold)");
-  EXPECT_EQ(failure_lines, branch.failed_correctors);  // each failure is said on stderr
-  ASSERT_TRUE(r.nonlinear.found) << r.nonlinear.explanation;
-  ASSERT_EQ(r.nonlinear.bound, StableBound::fold) << r.nonlinear.explanation;
-  const double fold = r.nonlinear.speed_m_per_s;
-  const PeriodicOrbit& first = branch.orbits.front();
-  ASSERT_TRUE(first.stable);
-  std::printf("[ vehicle  ] V_c %.3f m/s; first orbit %.4f mm at %.2f m/s; fold %.4f m/s after %zu "
-              "orbits, %.1f s CPU\n",
-              r.linear.critical_speed_m_per_s, 1e3 * first.amplitude(r.coords.amplitude_state),
-              first.speed_m_per_s, fold, branch.orbits.size(), branch.cpu_seconds);
-  EXPECT_LT(fold, first.speed_m_per_s);
-  EXPECT_LT(fold, r.linear.critical_speed_m_per_s);
-
-  // The ramps from the first orbit (on the stable cycle at 77 m/s).
-  std::vector<double> ends;
-  for (double a : {0.5, 0.2}) {
-    SpeedRampOptions ramp;
-    ramp.start_speed_m_per_s = first.speed_m_per_s;
-    ramp.ramp_rate_m_per_s2 = a;
-    ramp.end_speed_m_per_s = 70.0;
-    ramp.integration = integration_options_for(scene.spec.simulation);
-    const SpeedRampResult run =
-        run_speed_ramp(scene.model, embed_state(scene.model, r.reduced_states, first.start), ramp);
-    ASSERT_TRUE(run.vanished) << run.outcome;
-    ends.push_back(run.hunting_end_speed_m_per_s);
-    std::printf("[ vehicle  ] ramp %.1f m/s^2 from %.1f m/s: hunting ends at %.4f m/s (%.1f s CPU)\n",
-                a, first.speed_m_per_s, ends.back(), run.trajectory.stats.cpu_seconds);
-  }
-  EXPECT_LT(ends[0], ends[1]);  // the slower ramp nearer the fold
-  EXPECT_LT(ends[1], fold);     // a ramp cannot lose a stable cycle above its fold
-  const double spread = ends[1] - ends[0];
-  EXPECT_GT(fold, ends[1] + 0.67 * spread);
-  EXPECT_LT(fold, ends[1] + 1.72 * spread);
+  expect_fold_in_the_ramps_bracket("thesis_vehicle_s1002_tangent.toml", "vehicle", 60.0, 125.0, 16,
+                                   77.0, 70.0);
 }
