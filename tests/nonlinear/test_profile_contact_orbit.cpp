@@ -47,6 +47,15 @@ BifurcationOptions time_domain_branch_options(double from_m_per_s, double to_m_p
   return o;
 }
 
+// `railstab bifurcation CASE --from F --to T --no-hopf-branch --max-orbits N`
+// with the profile-contact default start (no cycle speed given).
+BifurcationResult default_start_run(const std::string& case_file, double from_m_per_s,
+                                    double to_m_per_s, int max_orbits) {
+  const PreparedScene scene = prepare_scene(std::string(RAILSTAB_CASES_DIR) + "/" + case_file, {});
+  return analyse_bifurcation(scene.model, scene.equilibrium.state, scene.speed_m_per_s,
+                             time_domain_branch_options(from_m_per_s, to_m_per_s, max_orbits));
+}
+
 // Issue 22: the nonlinear critical speed by continuation against the ramp
 // method at two rates, both computed here (no number of either put in).
 // The branch from the cycle a run from 5 mm settles on at cycle_speed is
@@ -237,12 +246,7 @@ TEST(ProfileContactOrbit, S1002BogieFlangeHuntingCycleIsATimeDomainSolution) {
 // within 2 % of the plain run's at 41 m/s (0.01 m/s away), stable. Two
 // orbits only; 20-60 s CPU.
 TEST(ProfileContactOrbit, S1002BogieDefaultCycleStartFindsTheFlangeHuntingCycle) {
-  const PreparedScene scene = prepare_scene(std::string(RAILSTAB_CASES_DIR) +
-                                                "/thesis_bogie_s1002_tangent.toml",
-                                            {});
-  const BifurcationOptions o = time_domain_branch_options(30.0, 45.0, 2);
-  const BifurcationResult r =
-      analyse_bifurcation(scene.model, scene.equilibrium.state, scene.speed_m_per_s, o);
+  const BifurcationResult r = default_start_run("thesis_bogie_s1002_tangent.toml", 30.0, 45.0, 2);
   ASSERT_TRUE(r.linear.critical_speed_found);
   EXPECT_TRUE(r.cycle_speed_default);
   EXPECT_NEAR(r.cycle_speed_m_per_s, kDefaultCycleSpeedRatio * r.linear.critical_speed_m_per_s, 1e-9);
@@ -267,12 +271,7 @@ TEST(ProfileContactOrbit, S1002BogieDefaultCycleStartFindsTheFlangeHuntingCycle)
 // exists, in seconds, where the first orbit at 122 m/s ran for 10 minutes
 // without converging. About 45 s CPU (four 6 s runs, two orbits).
 TEST(ProfileContactOrbit, S1002VehicleDefaultStartLowersItsSpeedToAPeriodicCycle) {
-  const PreparedScene scene = prepare_scene(std::string(RAILSTAB_CASES_DIR) +
-                                                "/thesis_vehicle_s1002_tangent.toml",
-                                            {});
-  const BifurcationOptions o = time_domain_branch_options(60.0, 150.0, 2);
-  const BifurcationResult r =
-      analyse_bifurcation(scene.model, scene.equilibrium.state, scene.speed_m_per_s, o);
+  const BifurcationResult r = default_start_run("thesis_vehicle_s1002_tangent.toml", 60.0, 150.0, 2);
   ASSERT_TRUE(r.linear.critical_speed_found);
   EXPECT_TRUE(r.cycle_speed_default);
   const double first_try = kDefaultCycleSpeedRatio * r.linear.critical_speed_m_per_s;
