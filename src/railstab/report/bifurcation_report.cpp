@@ -419,8 +419,8 @@ void write_markdown(std::ostream& md, const Model& model, const BifurcationResul
            << " x the linear critical speed)";
       if (r.cycle_speed_default && !r.cycle_speeds_not_periodic_m_per_s.empty()) {
         md << " (the default start on profile contact, " << kDefaultCycleSpeedRatio
-           << " x the linear critical speed, lowered by " << kDefaultStartLowering
-           << " where the settled run was not periodic to " << 100.0 * kSettledCycleSpreadLimit
+           << " x the linear critical speed, times " << kDefaultStartLowering
+           << " each time the settled run was not periodic to " << 100.0 * kSettledCycleSpreadLimit
            << " %: at";
         for (size_t k = 0; k < r.cycle_speeds_not_periodic_m_per_s.size(); ++k)
           md << (k ? "," : "") << " " << speed_text(r.cycle_speeds_not_periodic_m_per_s[k]);
