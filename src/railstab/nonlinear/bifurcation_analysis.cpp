@@ -115,6 +115,8 @@ BranchResult branch_from_time_domain(const Model& model, const FlowSystem& syste
                                      BifurcationResult& r, const BifurcationOptions& o) {
   BranchResult b;
   b.origin = "time_domain";
+  std::string settled;  // the settled cycles, once the start is chosen
+  bool irregular = false;
   try {
     // How periodic the settled run was: shooting needs a periodic orbit near
     // the guess, and a motion whose cycles differ (the S1002 vehicle above
@@ -124,7 +126,6 @@ BranchResult branch_from_time_domain(const Model& model, const FlowSystem& syste
     // then tries kDefaultStartLowering lower, up to kDefaultStartTries
     // times, within the range.
     OrbitGuess guess;
-    bool irregular = false;
     for (int attempt = 0;; ++attempt) {
       const double V = r.cycle_speed_m_per_s;
       const EquilibriumResult eq = continue_equilibrium_in_speed(model, speed, equilibrium, V, {});
@@ -148,19 +149,15 @@ BranchResult branch_from_time_domain(const Model& model, const FlowSystem& syste
       r.cycle_speed_m_per_s = lower;
     }
     const double V = r.cycle_speed_m_per_s;
-    const std::string settled = settled_cycles_text(guess, irregular);
+    settled = settled_cycles_text(guess, irregular);
     if (o.progress) o.progress("  time domain: " + settled + "; the first orbit from it");
-    try {
-      const ContinuationOptions c = continuation_for(o, "time-domain", r.coords, r.profile_contact);
-      const PeriodicOrbit first = solve_periodic_orbit(
-          system, r.coords, OrbitConstraint::fixed_speed(V), guess.start, guess.period_s, V, c.shooting);
-      b.branch = continue_from_orbit(system, r.coords, first, o.cycle_speed_step_m_per_s, c);
-    } catch (const std::exception& e) {
-      b.error = e.what();
-      if (irregular) b.error += " (" + settled + ")";
-    }
+    const ContinuationOptions c = continuation_for(o, "time-domain", r.coords, r.profile_contact);
+    const PeriodicOrbit first = solve_periodic_orbit(
+        system, r.coords, OrbitConstraint::fixed_speed(V), guess.start, guess.period_s, V, c.shooting);
+    b.branch = continue_from_orbit(system, r.coords, first, o.cycle_speed_step_m_per_s, c);
   } catch (const std::exception& e) {
     b.error = e.what();
+    if (irregular && !settled.empty()) b.error += " (" + settled + ")";
   }
   return b;
 }

@@ -82,21 +82,18 @@ OrbitGuess settled_cycle_guess(const Model& model, double speed_m_per_s,
   // The settled motion: the second half of the run, whose complete cycles
   // (15-20 on the S1002 vehicle) show whether it is periodic; whether it has
   // decayed is judged on its last second.
-  auto window = [&](double from, std::vector<double>& times, std::vector<Eigen::VectorXd>& states,
-                    double& lo, double& hi) {
-    lo = 1e300, hi = -1e300;
-    for (size_t k = 0; k < run.times_s.size(); ++k)
-      if (run.times_s[k] >= from) {
-        times.push_back(run.times_s[k]);
-        states.push_back(reduce_state(reduced_states, run.states[k]));
-        lo = std::min(lo, states.back()(coords.amplitude_state));
-        hi = std::max(hi, states.back()(coords.amplitude_state));
-      }
-  };
   std::vector<double> times;
   std::vector<Eigen::VectorXd> states;
-  double lo = 0.0, hi = 0.0;
-  window(std::max(0.5 * settle_time_s, settle_time_s - 1.0), times, states, lo, hi);
+  const double last_second = std::max(0.5 * settle_time_s, settle_time_s - 1.0);
+  double lo = 1e300, hi = -1e300;
+  for (size_t k = 0; k < run.times_s.size(); ++k) {
+    if (run.times_s[k] < 0.5 * settle_time_s) continue;
+    times.push_back(run.times_s[k]);
+    states.push_back(reduce_state(reduced_states, run.states[k]));
+    if (run.times_s[k] < last_second) continue;
+    lo = std::min(lo, states.back()(coords.amplitude_state));
+    hi = std::max(hi, states.back()(coords.amplitude_state));
+  }
   if (!(hi - lo > 2e-6)) {
     std::ostringstream msg;
     msg << "no self-sustained oscillation at " << speed_m_per_s << " m/s: the run from a "
@@ -104,8 +101,6 @@ OrbitGuess settled_cycle_guess(const Model& model, double speed_m_per_s,
         << " mm peak after " << settle_time_s << " s";
     throw std::runtime_error(msg.str());
   }
-  times.clear(), states.clear();
-  window(0.5 * settle_time_s, times, states, lo, hi);
   return orbit_guess_from_samples(times, states, coords);
 }
 

@@ -414,16 +414,15 @@ void write_markdown(std::ostream& md, const Model& model, const BifurcationResul
     md << "### Branch from the " << (b.origin == "hopf" ? "Hopf point" : "time-domain cycle");
     if (b.origin == "time_domain") {
       md << " at " << speed_text(r.cycle_speed_m_per_s);
-      if (r.cycle_speed_default && r.cycle_speeds_not_periodic_m_per_s.empty())
+      if (r.cycle_speed_default) {
         md << " (the default start on profile contact: " << kDefaultCycleSpeedRatio
-           << " x the linear critical speed)";
-      if (r.cycle_speed_default && !r.cycle_speeds_not_periodic_m_per_s.empty()) {
-        md << " (the default start on profile contact, " << kDefaultCycleSpeedRatio
-           << " x the linear critical speed, times " << kDefaultStartLowering
-           << " each time the settled run was not periodic to " << 100.0 * kSettledCycleSpreadLimit
-           << " %: at";
-        for (size_t k = 0; k < r.cycle_speeds_not_periodic_m_per_s.size(); ++k)
-          md << (k ? "," : "") << " " << speed_text(r.cycle_speeds_not_periodic_m_per_s[k]);
+           << " x the linear critical speed";
+        const std::vector<double>& left = r.cycle_speeds_not_periodic_m_per_s;
+        if (!left.empty()) {
+          md << ", times " << kDefaultStartLowering << " each time the settled run was not periodic to "
+             << 100.0 * kSettledCycleSpreadLimit << " %: at";
+          for (size_t k = 0; k < left.size(); ++k) md << (k ? "," : "") << " " << speed_text(left[k]);
+        }
         md << ")";
       }
       md << ", followed " << (r.cycle_branch_upwards ? "upwards" : "downwards") << " in speed first";
